@@ -1,0 +1,207 @@
+#include "vtkIceCubeMapSource.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTexture.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkIceCubeMapSource);
+
+namespace
+{
+constexpr int NumberOfFaces = 6;
+
+double Smooth(double edge0, double edge1, double x)
+{
+  const double t = std::min(1.0, std::max(0.0, (x - edge0) / (edge1 - edge0)));
+  return t * t * (3.0 - 2.0 * t);
+}
+
+void Mix(const double a[3], const double b[3], double t, double out[3])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] = a[c] + (b[c] - a[c]) * t;
+  }
+}
+
+// Smooth, distinct on every face, and steep enough that a direction error of a few
+// milliradians changes the colour measurably.
+void DirectionTestColor(const double d[3], double rgb[3])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    rgb[c] = 0.5 + 0.45 * std::sin(4.0 * d[c] + c);
+  }
+}
+
+// A sky with a sun above a ring of snowy mountains and a checkered plain, +Y up.
+void SkyColor(const double d[3], double rgb[3])
+{
+  const double zenith[3] = { 0.18, 0.38, 0.78 };
+  const double horizon[3] = { 0.78, 0.86, 0.95 };
+  const double haze[3] = { 0.72, 0.78, 0.84 };
+  const double rock[3] = { 0.32, 0.36, 0.45 };
+  const double snow[3] = { 0.95, 0.96, 0.98 };
+  const double fieldA[3] = { 0.30, 0.46, 0.28 };
+  const double fieldB[3] = { 0.82, 0.84, 0.76 };
+
+  const double elevation = d[1];
+  const double azimuth = std::atan2(d[2], d[0]);
+  const double ridge = 0.06 + 0.035 * std::sin(3.0 * azimuth + 0.5) + 0.02 * std::sin(7.0 * azimuth) +
+    0.01 * std::sin(19.0 * azimuth + 2.0);
+
+  if (elevation >= 0.0 && elevation > ridge)
+  {
+    Mix(horizon, zenith, std::sqrt(std::min(1.0, elevation)), rgb);
+    const double sun[3] = { 0.45, 0.55, -0.70 };
+    const double cosSun = vtkMath::Dot(d, sun) / vtkMath::Norm(sun);
+    const double disk = Smooth(0.9985, 0.9992, cosSun);
+    const double glow = 0.35 * std::pow(std::max(0.0, cosSun), 64.0);
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb[c] = std::min(1.0, rgb[c] + glow + disk);
+    }
+  }
+  else if (elevation >= 0.0)
+  {
+    // Mountains: rock with snow on the upper part of each peak.
+    Mix(rock, snow, Smooth(0.55, 0.75, elevation / ridge), rgb);
+    Mix(rgb, haze, 0.25, rgb);
+  }
+  else
+  {
+    // Ground plane one unit below the eye; the checker fades into haze towards the horizon.
+    const double t = 1.0 / std::max(-elevation, 1e-6);
+    const double x = d[0] * t;
+    const double z = d[2] * t;
+    const bool odd = (static_cast<long long>(std::floor(x)) + static_cast<long long>(std::floor(z))) & 1;
+    double ground[3];
+    Mix(fieldA, fieldB, odd ? 1.0 : 0.0, ground);
+    Mix(ground, haze, 1.0 - std::exp(-0.06 * t), rgb);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkIceCubeMapSource::vtkIceCubeMapSource()
+  : Pattern(Sky)
+  , FaceSize(256)
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(NumberOfFaces);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapSource::Evaluate(const double dir[3], double rgb[3]) const
+{
+  double d[3] = { dir[0], dir[1], dir[2] };
+  if (vtkMath::Normalize(d) == 0.0)
+  {
+    rgb[0] = rgb[1] = rgb[2] = 0.0;
+    return;
+  }
+  if (this->Pattern == DirectionTest)
+  {
+    DirectionTestColor(d, rgb);
+  }
+  else
+  {
+    SkyColor(d, rgb);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapSource::TexelDirection(int face, int i, int j, int size, double dir[3])
+{
+  // Texel centre in [-1, 1]; (s, t) as in the OpenGL specification's cube map table.
+  const double s = 2.0 * (i + 0.5) / size - 1.0;
+  const double t = 2.0 * (j + 0.5) / size - 1.0;
+  switch (face)
+  {
+    case 0: dir[0] = 1.0; dir[1] = -t; dir[2] = -s; break;
+    case 1: dir[0] = -1.0; dir[1] = -t; dir[2] = s; break;
+    case 2: dir[0] = s; dir[1] = 1.0; dir[2] = t; break;
+    case 3: dir[0] = s; dir[1] = -1.0; dir[2] = -t; break;
+    case 4: dir[0] = s; dir[1] = -t; dir[2] = 1.0; break;
+    default: dir[0] = -s; dir[1] = -t; dir[2] = -1.0; break;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapSource::ConfigureTexture(vtkTexture* texture)
+{
+  texture->CubeMapOn();
+  texture->InterpolateOn();
+  texture->MipmapOff();
+  texture->RepeatOff();
+  texture->EdgeClampOn();
+  for (int face = 0; face < NumberOfFaces; ++face)
+  {
+    texture->SetInputConnection(face, this->GetOutputPort(face));
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkIceCubeMapSource::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  const int extent[6] = { 0, this->FaceSize - 1, 0, this->FaceSize - 1, 0, 0 };
+  for (int face = 0; face < NumberOfFaces; ++face)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(face);
+    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+    vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_UNSIGNED_CHAR, 3);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkIceCubeMapSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  const int size = this->FaceSize;
+  for (int face = 0; face < NumberOfFaces; ++face)
+  {
+    vtkImageData* image = vtkImageData::GetData(outputVector, face);
+    image->SetDimensions(size, size, 1);
+    vtkNew<vtkUnsignedCharArray> pixels;
+    pixels->SetName("CubeFace");
+    pixels->SetNumberOfComponents(3);
+    pixels->SetNumberOfTuples(static_cast<vtkIdType>(size) * size);
+    unsigned char* out = pixels->GetPointer(0);
+    for (int j = 0; j < size; ++j)
+    {
+      for (int i = 0; i < size; ++i)
+      {
+        double dir[3];
+        double rgb[3];
+        TexelDirection(face, i, j, size, dir);
+        this->Evaluate(dir, rgb);
+        for (int c = 0; c < 3; ++c)
+        {
+          *out++ = static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, rgb[c]))));
+        }
+      }
+    }
+    image->GetPointData()->SetScalars(pixels);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Pattern: " << (this->Pattern == Sky ? "Sky" : "DirectionTest") << "\n";
+  os << indent << "FaceSize: " << this->FaceSize << "\n";
+}

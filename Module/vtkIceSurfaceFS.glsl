@@ -1,0 +1,18 @@
+//ICE::Dec
+in vec3 icePositionWC;
+in vec3 iceNormalWC;
+in float iceFresnelFactor;
+uniform samplerCube iceEnvironment;
+uniform vec3 iceCameraWC;
+uniform float iceRefractionRatio;
+uniform vec3 iceTint;
+//ICE::Impl
+  {
+    vec3 e = normalize(icePositionWC - iceCameraWC);
+    vec3 nFront = normalize(iceNormalWC);
+    if (gl_FrontFacing == false) { nFront = -nFront; }
+    vec3 nRefract = nFront;
+    vec3 refracted = texture(iceEnvironment, iceRefract(e, nRefract, iceRefractionRatio)).rgb;
+    vec3 reflected = texture(iceEnvironment, iceReflect(e, nFront)).rgb;
+    gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(iceFresnelFactor, 0.0, 1.0));
+  }
