@@ -60,34 +60,38 @@ void SkyColor(const double d[3], double rgb[3])
   const double ridge = 0.06 + 0.035 * std::sin(3.0 * azimuth + 0.5) + 0.02 * std::sin(7.0 * azimuth) +
     0.01 * std::sin(19.0 * azimuth + 2.0);
 
-  if (elevation >= 0.0 && elevation > ridge)
+  if (elevation >= 0.0)
   {
-    Mix(horizon, zenith, std::sqrt(std::min(1.0, elevation)), rgb);
+    double sky[3];
+    Mix(horizon, zenith, std::sqrt(std::min(1.0, elevation)), sky);
     const double sun[3] = { 0.45, 0.55, -0.70 };
     const double cosSun = vtkMath::Dot(d, sun) / vtkMath::Norm(sun);
     const double disk = Smooth(0.9985, 0.9992, cosSun);
     const double glow = 0.35 * std::pow(std::max(0.0, cosSun), 64.0);
     for (int c = 0; c < 3; ++c)
     {
-      rgb[c] = std::min(1.0, rgb[c] + glow + disk);
+      sky[c] = std::min(1.0, sky[c] + glow + disk);
     }
-  }
-  else if (elevation >= 0.0)
-  {
-    // Mountains: rock with snow on the upper part of each peak.
-    Mix(rock, snow, Smooth(0.55, 0.75, elevation / ridge), rgb);
-    Mix(rgb, haze, 0.25, rgb);
+    // Mountains: rock with snow on the upper part of each peak, a soft skyline.
+    double mountain[3];
+    Mix(rock, snow, Smooth(0.55, 0.75, elevation / ridge), mountain);
+    Mix(mountain, haze, 0.25, mountain);
+    Mix(mountain, sky, Smooth(ridge - 0.004, ridge + 0.004, elevation), rgb);
   }
   else
   {
-    // Ground plane one unit below the eye; the checker fades into haze towards the horizon.
+    // Ground plane one unit below the eye with a checker of 0.5 units, its edges softened by
+    // the footprint of a texel on the plane (about t^2 texel angles) so it does not alias.
     const double t = 1.0 / std::max(-elevation, 1e-6);
-    const double x = d[0] * t;
-    const double z = d[2] * t;
-    const bool odd = (static_cast<long long>(std::floor(x)) + static_cast<long long>(std::floor(z))) & 1;
+    const double x = 2.0 * d[0] * t;
+    const double z = 2.0 * d[2] * t;
+    const double footprint = 0.004 * t * t;
+    auto square = [footprint](double u) {
+      return std::min(1.0, std::max(-1.0, std::sin(vtkMath::Pi() * u) / (vtkMath::Pi() * footprint)));
+    };
     double ground[3];
-    Mix(fieldA, fieldB, odd ? 1.0 : 0.0, ground);
-    Mix(ground, haze, 1.0 - std::exp(-0.06 * t), rgb);
+    Mix(fieldA, fieldB, 0.5 + 0.5 * square(x) * square(z), ground);
+    Mix(ground, haze, 1.0 - std::exp(-0.08 * t), rgb);
   }
 }
 }

@@ -1,0 +1,167 @@
+// ice-render: renders a model as ice in front of an environment, to a PNG or in a window.
+#include "IceScene.h"
+
+#include "vtkActor.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace
+{
+const char* const Usage =
+  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|DIR] [--size WxH]\n"
+  "                  [--out FILE] [--interactive]\n"
+  "Renders a model as ice (default: the teapot in front of a procedural sky) to ice.png.\n"
+  "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
+  "  --env    sky, test, or a folder with cube faces px nx py ny pz nz (.png/.jpg/.bmp/.tif)\n"
+  "  --size   image size, default 1024x768\n"
+  "  --out    output PNG, default ice.png\n"
+  "  --interactive  open a window with a trackball camera instead of writing a file\n";
+
+struct Options
+{
+  std::string Model = "teapot";
+  std::string Environment = "sky";
+  std::string Output = "ice.png";
+  int Width = 1024;
+  int Height = 768;
+  bool Interactive = false;
+};
+
+int Fail(const std::string& message, int code)
+{
+  std::cerr << "ice-render: " << message << "\n";
+  return code;
+}
+
+bool ParseSize(const std::string& text, int& width, int& height)
+{
+  char x = 0;
+  char extra = 0;
+  return std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) == 3 && x == 'x' &&
+    width >= 16 && height >= 16 && width <= 8192 && height <= 8192;
+}
+
+// Returns -1 when the arguments are fine, otherwise the exit code.
+int Parse(int argc, char* argv[], Options& options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc)
+      {
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string text;
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << Usage;
+      return 0;
+    }
+    else if (arg == "--interactive")
+    {
+      options.Interactive = true;
+    }
+    else if (arg == "--model" || arg == "--env" || arg == "--out" || arg == "--size")
+    {
+      if (!value(text))
+      {
+        return Fail("option " + arg + " needs a value (see --help)", 2);
+      }
+      if (arg == "--model")
+      {
+        options.Model = text;
+      }
+      else if (arg == "--env")
+      {
+        options.Environment = text;
+      }
+      else if (arg == "--out")
+      {
+        options.Output = text;
+      }
+      else if (!ParseSize(text, options.Width, options.Height))
+      {
+        return Fail("bad --size '" + text + "' (expected WxH, each 16..8192)", 2);
+      }
+    }
+    else
+    {
+      return Fail("unknown argument '" + arg + "' (see --help)", 2);
+    }
+  }
+  return -1;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  const int parsed = Parse(argc, argv, options);
+  if (parsed >= 0)
+  {
+    return parsed;
+  }
+
+  std::string error;
+  vtkSmartPointer<vtkPolyData> model = IceScene::LoadModel(options.Model, error);
+  if (!model)
+  {
+    return Fail(error, 1);
+  }
+  vtkSmartPointer<vtkTexture> environment = IceScene::LoadEnvironment(options.Environment, error);
+  if (!environment)
+  {
+    return Fail(error, 1);
+  }
+  if (!options.Interactive && !std::ofstream(options.Output).good())
+  {
+    return Fail("cannot write '" + options.Output + "'", 1);
+  }
+
+  vtkNew<vtkRenderer> renderer;
+  IceScene::Populate(renderer, model, environment);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(options.Width, options.Height);
+  window->AddRenderer(renderer);
+  window->SetWindowName("VTK Ice");
+
+  if (options.Interactive)
+  {
+    vtkNew<vtkRenderWindowInteractor> interactor;
+    vtkNew<vtkInteractorStyleTrackballCamera> style;
+    interactor->SetInteractorStyle(style);
+    interactor->SetRenderWindow(window);
+    window->Render();
+    interactor->Start();
+    return 0;
+  }
+
+  window->SetOffScreenRendering(1);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(options.Output.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  std::cout << "ice-render: wrote " << options.Output << " (" << options.Width << "x"
+            << options.Height << ", model " << options.Model << ")\n";
+  return 0;
+}

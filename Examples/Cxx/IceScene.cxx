@@ -1,0 +1,268 @@
+#include "IceScene.h"
+
+#include "vtkIceBlockSource.h"
+#include "vtkIceCubeMapSource.h"
+#include "vtkIceMapper.h"
+#include "vtkIceTeapotSource.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkImageFlip.h"
+#include "vtkImageReader2.h"
+#include "vtkImageReader2Factory.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkSkybox.h"
+#include "vtkSphereSource.h"
+#include "vtkTexture.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+namespace IceScene
+{
+namespace
+{
+// Runs `algorithm`, turning its VTK errors into `error` instead of console output.
+bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error)
+{
+  vtkNew<vtkCallbackCommand> catcher;
+  catcher->SetClientData(&error);
+  catcher->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    std::string& message = *static_cast<std::string*>(clientData);
+    if (message.empty() && callData)
+    {
+      message = static_cast<const char*>(callData);
+      message.erase(std::remove(message.begin(), message.end(), '\n'), message.end());
+    }
+  });
+  const unsigned long tag = algorithm->AddObserver(vtkCommand::ErrorEvent, catcher);
+  algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
+  algorithm->Update();
+  algorithm->RemoveObserver(tag);
+  return error.empty();
+}
+
+std::string Extension(const std::string& path)
+{
+  const std::string::size_type dot = path.rfind('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+bool Readable(const std::string& path)
+{
+  return std::ifstream(path).good();
+}
+
+vtkSmartPointer<vtkAlgorithm> ModelReader(const std::string& path, std::string& error)
+{
+  const std::string ext = Extension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == "vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "vtk")
+  {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == "ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    error = "unknown model '" + path + "' (use teapot, block, sphere or a .vtp, .vtk, .stl, .obj or .ply file)";
+  }
+  return reader;
+}
+
+// Centres the model at the origin with its largest extent scaled to 2.
+vtkSmartPointer<vtkPolyData> Normalize(vtkPolyData* model)
+{
+  double bounds[6];
+  model->GetBounds(bounds);
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  vtkNew<vtkTransform> transform;
+  transform->Scale(2.0 / extent, 2.0 / extent, 2.0 / extent);
+  transform->Translate(-0.5 * (bounds[0] + bounds[1]), -0.5 * (bounds[2] + bounds[3]),
+    -0.5 * (bounds[4] + bounds[5]));
+  vtkNew<vtkTransformPolyDataFilter> apply;
+  apply->SetInputData(model);
+  apply->SetTransform(transform);
+  apply->Update();
+  return apply->GetOutput();
+}
+}
+
+vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& error)
+{
+  vtkSmartPointer<vtkAlgorithm> source;
+  if (model == "teapot")
+  {
+    source = vtkSmartPointer<vtkIceTeapotSource>::New();
+  }
+  else if (model == "block")
+  {
+    source = vtkSmartPointer<vtkIceBlockSource>::New();
+  }
+  else if (model == "sphere")
+  {
+    // About 960 triangles, the sphere of the paper's measurements.
+    auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+    sphere->SetThetaResolution(32);
+    sphere->SetPhiResolution(17);
+    source = sphere;
+  }
+  else
+  {
+    source = ModelReader(model, error);
+    if (!source)
+    {
+      return nullptr;
+    }
+    if (!Readable(model))
+    {
+      error = "cannot open model file '" + model + "'";
+      return nullptr;
+    }
+  }
+  if (!UpdateQuietly(source, error))
+  {
+    error = "cannot read model '" + model + "': " + error;
+    return nullptr;
+  }
+  vtkPolyData* output = vtkPolyData::SafeDownCast(source->GetOutputDataObject(0));
+  if (!output || output->GetNumberOfPolys() + output->GetNumberOfStrips() == 0)
+  {
+    error = "model '" + model + "' has no polygons";
+    return nullptr;
+  }
+  return Normalize(output);
+}
+
+vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error)
+{
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  if (environment == "sky" || environment == "test")
+  {
+    vtkNew<vtkIceCubeMapSource> source;
+    source->SetFaceSize(environment == "sky" ? 512 : 256);
+    source->SetPattern(environment == "sky" ? vtkIceCubeMapSource::Sky
+                                            : vtkIceCubeMapSource::DirectionTest);
+    source->ConfigureTexture(texture);
+    return texture;
+  }
+
+  static const char* const faces[6] = { "px", "nx", "py", "ny", "pz", "nz" };
+  static const char* const extensions[5] = { "png", "jpg", "jpeg", "bmp", "tif" };
+  int size = -1;
+  for (int face = 0; face < 6; ++face)
+  {
+    std::string path;
+    for (const char* ext : extensions)
+    {
+      const std::string candidate = environment + "/" + faces[face] + "." + ext;
+      if (Readable(candidate))
+      {
+        path = candidate;
+        break;
+      }
+    }
+    if (path.empty())
+    {
+      error = "environment '" + environment + "' has no readable face image " + faces[face] +
+        ".png (or .jpg, .bmp, .tif); expected px, nx, py, ny, pz, nz";
+      return nullptr;
+    }
+    vtkSmartPointer<vtkImageReader2> reader;
+    reader.TakeReference(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
+    if (!reader)
+    {
+      error = "cannot read environment face '" + path + "'";
+      return nullptr;
+    }
+    reader->SetFileName(path.c_str());
+    if (!UpdateQuietly(reader, error))
+    {
+      error = "cannot read environment face '" + path + "': " + error;
+      return nullptr;
+    }
+    int dims[3];
+    reader->GetOutput()->GetDimensions(dims);
+    if (dims[0] != dims[1] || dims[0] <= 0 || (size >= 0 && dims[0] != size))
+    {
+      error = "environment faces must be square and of one size; '" + path + "' is " +
+        std::to_string(dims[0]) + "x" + std::to_string(dims[1]);
+      return nullptr;
+    }
+    size = dims[0];
+    // Cube map faces are stored top row first; VTK's readers put the bottom row first.
+    vtkNew<vtkImageFlip> flip;
+    flip->SetInputConnection(reader->GetOutputPort());
+    flip->SetFilteredAxis(1);
+    texture->SetInputConnection(face, flip->GetOutputPort());
+  }
+  texture->CubeMapOn();
+  texture->InterpolateOn();
+  texture->MipmapOff();
+  texture->EdgeClampOn();
+  return texture;
+}
+
+vtkActor* Populate(vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment)
+{
+  renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(environment);
+  renderer->AddActor(skybox);
+
+  vtkNew<vtkIceMapper> mapper;
+  mapper->SetInputData(model);
+  vtkNew<vtkActor> ice;
+  ice->SetMapper(mapper);
+  renderer->AddActor(ice);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(2.1, 0.9, 3.9);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(32.0);
+  renderer->ResetCameraClippingRange();
+  return ice;
+}
+}

@@ -1,0 +1,31 @@
+// The default ice scene shared by ice-render, ice-bench and the image tests: a model turned to
+// ice in front of an environment cube map that is also drawn as the skybox.
+#ifndef IceScene_h
+#define IceScene_h
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkActor;
+class vtkPolyData;
+class vtkRenderer;
+class vtkTexture;
+
+namespace IceScene
+{
+// "teapot", "block", "sphere" or a .vtp/.vtk/.stl/.obj/.ply file. The model is centred at the
+// origin and scaled so its largest extent is 2. Returns nullptr and sets `error` on failure.
+vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& error);
+
+// "sky" (procedural landscape), "test" (smooth direction pattern) or a folder holding six face
+// images px, nx, py, ny, pz, nz (.png, .jpg, .bmp or .tif; all square, all the same size).
+// Returns nullptr and sets `error` on failure.
+vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error);
+
+// Adds the skybox, the environment and an ice actor for `model`, and frames the camera.
+// Returns the ice actor (its mapper is a vtkIceMapper).
+vtkActor* Populate(vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment);
+}
+
+#endif

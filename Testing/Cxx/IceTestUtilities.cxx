@@ -1,0 +1,215 @@
+#include "IceTestUtilities.h"
+
+#include "vtkIceCubeMapSource.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkRenderer.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkTesting.h"
+#include "vtkTexture.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtkPointData.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace IceTest
+{
+namespace
+{
+Image FromImageData(vtkImageData* data)
+{
+  Image image;
+  int dims[3];
+  data->GetDimensions(dims);
+  image.Width = dims[0];
+  image.Height = dims[1];
+  image.RGB.resize(3 * static_cast<size_t>(dims[0]) * dims[1]);
+  vtkDataArray* scalars = data->GetPointData()->GetScalars();
+  const int components = scalars->GetNumberOfComponents();
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(dims[0]) * dims[1]; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      image.RGB[3 * p + c] =
+        static_cast<unsigned char>(scalars->GetComponent(p, std::min(c, components - 1)));
+    }
+  }
+  return image;
+}
+}
+
+Image Capture(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  return FromImageData(grab->GetOutput());
+}
+
+int PixelDifference(const unsigned char* a, const unsigned char* b)
+{
+  int worst = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    worst = std::max(worst, std::abs(static_cast<int>(a[c]) - static_cast<int>(b[c])));
+  }
+  return worst;
+}
+
+Stats Summarize(std::vector<double> values)
+{
+  Stats stats;
+  stats.Count = values.size();
+  if (values.empty())
+  {
+    return stats;
+  }
+  std::sort(values.begin(), values.end());
+  double sum = 0.0;
+  for (double v : values)
+  {
+    sum += v;
+  }
+  stats.Mean = sum / values.size();
+  stats.P99 = values[std::min(values.size() - 1, static_cast<size_t>(0.99 * values.size()))];
+  stats.Max = values.back();
+  return stats;
+}
+
+bool CheckImage(int argc, char* argv[], vtkRenderWindow* window)
+{
+  const int regression = vtkRegressionTestImage(window);
+  if (regression != vtkTesting::PASSED)
+  {
+    std::cerr << "VTK image regression test failed\n";
+    return false;
+  }
+
+  vtkNew<vtkTesting> testing;
+  testing->AddArguments(argc, argv);
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(testing->GetValidImageFileName());
+  reader->Update();
+  const Image baseline = FromImageData(reader->GetOutput());
+  const Image rendered = Capture(window);
+  if (baseline.Width != rendered.Width || baseline.Height != rendered.Height)
+  {
+    std::cerr << "Baseline is " << baseline.Width << "x" << baseline.Height << ", render is "
+              << rendered.Width << "x" << rendered.Height << "\n";
+    return false;
+  }
+  double sum = 0.0;
+  size_t far = 0;
+  const size_t pixels = static_cast<size_t>(rendered.Width) * rendered.Height;
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    const int d = PixelDifference(&baseline.RGB[3 * p], &rendered.RGB[3 * p]);
+    sum += d;
+    far += d > 16 ? 1 : 0;
+  }
+  const double mean = sum / pixels;
+  const double farFraction = static_cast<double>(far) / pixels;
+  std::cout << "Strict baseline comparison: mean " << mean << "/255, " << 100.0 * farFraction
+            << "% of pixels off by more than 16/255\n";
+  return mean <= 1.0 && farFraction <= 0.002;
+}
+
+vtkSmartPointer<vtkTexture> MakeCubeMap(int pattern, int faceSize)
+{
+  vtkNew<vtkIceCubeMapSource> source;
+  source->SetPattern(pattern);
+  source->SetFaceSize(faceSize);
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  source->ConfigureTexture(texture);
+  return texture;
+}
+
+void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double direction[3])
+{
+  renderer->GetActiveCamera()->GetPosition(origin);
+  renderer->SetDisplayPoint(x + 0.5, y + 0.5, 0.5);
+  renderer->DisplayToWorld();
+  double world[4];
+  renderer->GetWorldPoint(world);
+  for (int i = 0; i < 3; ++i)
+  {
+    direction[i] = world[i] / world[3] - origin[i];
+  }
+  vtkMath::Normalize(direction);
+}
+
+double IntersectSphere(
+  const double origin[3], const double direction[3], const double center[3], double radius)
+{
+  double oc[3];
+  vtkMath::Subtract(origin, center, oc);
+  const double b = vtkMath::Dot(oc, direction);
+  const double c = vtkMath::Dot(oc, oc) - radius * radius;
+  const double discriminant = b * b - c;
+  if (discriminant < 0.0)
+  {
+    return -1.0;
+  }
+  const double t = -b - std::sqrt(discriminant);
+  return t > 0.0 ? t : -1.0;
+}
+
+std::vector<bool> SphereInterior(
+  vtkRenderer* renderer, const double center[3], double radius, int margin)
+{
+  const int* size = renderer->GetSize();
+  const int width = size[0];
+  const int height = size[1];
+  std::vector<bool> hit(static_cast<size_t>(width) * height);
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      double origin[3];
+      double direction[3];
+      PixelRay(renderer, x, y, origin, direction);
+      hit[y * width + x] = IntersectSphere(origin, direction, center, radius) > 0.0;
+    }
+  }
+  std::vector<bool> interior(hit.size(), false);
+  for (int y = margin; y < height - margin; ++y)
+  {
+    for (int x = margin; x < width - margin; ++x)
+    {
+      bool all = true;
+      for (int dy = -margin; dy <= margin && all; ++dy)
+      {
+        for (int dx = -margin; dx <= margin && all; ++dx)
+        {
+          all = hit[(y + dy) * width + x + dx];
+        }
+      }
+      interior[y * width + x] = all;
+    }
+  }
+  return interior;
+}
+
+void MessageRecorder::Execute(vtkObject*, unsigned long event, void* data)
+{
+  const std::string text = data ? static_cast<const char*>(data) : "";
+  (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
+}
+
+void MessageRecorder::Watch(vtkObject* object)
+{
+  object->AddObserver(vtkCommand::ErrorEvent, this);
+  object->AddObserver(vtkCommand::WarningEvent, this);
+}
+}
