@@ -43,8 +43,8 @@ public:
 
   ///@{
   /**
-   * Largest displacement along the normal, relative to half the edge length.
-   * Default is 0.08.
+   * Amplitude of the noise displacement along the normal, relative to half
+   * the edge length (the noise lies in about [-1, 1]). Default is 0.08.
    */
   vtkSetClampMacro(Displacement, double, 0.0, 1.0);
   vtkGetMacro(Displacement, double);

@@ -136,6 +136,17 @@ void vtkIceMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+double* vtkIceMapper::GetBounds()
+{
+  double* bounds = this->Superclass::GetBounds();
+  if (vtkPolyData* input = this->GetInput())
+  {
+    this->PrepareInput(input);
+  }
+  return bounds;
+}
+
+//------------------------------------------------------------------------------
 vtkTexture* vtkIceMapper::SelectEnvironment(vtkRenderer* ren)
 {
   vtkTexture* env = ren->GetEnvironmentTexture();

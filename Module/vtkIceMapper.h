@@ -72,6 +72,13 @@ public:
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
 
   /**
+   * Bounds of the input. Also checks the input, so that bad input is reported even when the
+   * renderer culls the actor (empty data has no bounds).
+   */
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+
+  /**
    * Frees the OpenGL resources of this mapper (and of its built-in sky) for the window.
    */
   void ReleaseGraphicsResources(vtkWindow* win) override;

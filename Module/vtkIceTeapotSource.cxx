@@ -273,7 +273,8 @@ int vtkIceTeapotSource::RequestData(
       }
     }
 
-    // The classic data winds some patches inward; reverse those.
+    // Copies of the classic data differ in how patches are wound; wind each
+    // one outward regardless.
     const bool outward = IsPatchOutward(patchIndex);
     for (int i = 0; i < res; ++i)
     {

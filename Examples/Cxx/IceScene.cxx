@@ -7,7 +7,6 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
@@ -15,7 +14,10 @@
 #include "vtkImageReader2.h"
 #include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
+#include "vtkLogger.h"
 #include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
@@ -36,23 +38,39 @@ namespace IceScene
 {
 namespace
 {
-// Runs `algorithm`, turning its VTK errors into `error` instead of console output.
+// Collects VTK's error text while loading files, so that ice-render reports one clean line.
+class CapturedOutput : public vtkOutputWindow
+{
+public:
+  static CapturedOutput* New() { VTK_STANDARD_NEW_BODY(CapturedOutput); }
+  void DisplayText(const char* text) override
+  {
+    if (this->FirstMessage.empty() && text)
+    {
+      // Keep the message, not VTK's "ERROR: In file, line N / vtkClass (address): " preamble.
+      std::string message = text;
+      const std::string::size_type start = message.find("): ");
+      message = start == std::string::npos ? message : message.substr(start + 3);
+      message.erase(std::remove(message.begin(), message.end(), '\n'), message.end());
+      this->FirstMessage = message;
+    }
+  }
+  std::string FirstMessage;
+};
+
+// Runs `algorithm` with VTK's console output captured; false and `error` set if it complained.
 bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error)
 {
-  vtkNew<vtkCallbackCommand> catcher;
-  catcher->SetClientData(&error);
-  catcher->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-    std::string& message = *static_cast<std::string*>(clientData);
-    if (message.empty() && callData)
-    {
-      message = static_cast<const char*>(callData);
-      message.erase(std::remove(message.begin(), message.end(), '\n'), message.end());
-    }
-  });
-  const unsigned long tag = algorithm->AddObserver(vtkCommand::ErrorEvent, catcher);
-  algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkNew<CapturedOutput> capture;
+  vtkOutputWindow::SetInstance(capture);
+  // VTK also logs errors to stderr through vtkLogger, bypassing the output window.
+  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   algorithm->Update();
-  algorithm->RemoveObserver(tag);
+  vtkLogger::SetStderrVerbosity(verbosity);
+  vtkOutputWindow::SetInstance(previous);
+  error = capture->FirstMessage;
   return error.empty();
 }
 
@@ -188,6 +206,11 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
     return texture;
   }
 
+  // CubeMapOn first: it gives the texture its six input ports.
+  texture->CubeMapOn();
+  texture->InterpolateOn();
+  texture->MipmapOff();
+  texture->EdgeClampOn();
   static const char* const faces[6] = { "px", "nx", "py", "ny", "pz", "nz" };
   static const char* const extensions[5] = { "png", "jpg", "jpeg", "bmp", "tif" };
   int size = -1;
@@ -237,10 +260,6 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
     flip->SetFilteredAxis(1);
     texture->SetInputConnection(face, flip->GetOutputPort());
   }
-  texture->CubeMapOn();
-  texture->InterpolateOn();
-  texture->MipmapOff();
-  texture->EdgeClampOn();
   return texture;
 }
 

@@ -203,7 +203,14 @@ std::vector<bool> SphereInterior(
 
 void MessageRecorder::Execute(vtkObject*, unsigned long event, void* data)
 {
-  const std::string text = data ? static_cast<const char*>(data) : "";
+  // Keep only the message itself, not VTK's "ERROR: In file, line" preamble.
+  std::string text = data ? static_cast<const char*>(data) : "";
+  const std::string::size_type start = text.find("): ");
+  if (start != std::string::npos)
+  {
+    text = text.substr(start + 3);
+  }
+  text.erase(text.find_last_not_of("\n") + 1);
   (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
 }
 

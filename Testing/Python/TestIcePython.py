@@ -1,0 +1,93 @@
+"""vtkice from Python: properties with VTK's clamping, and ice that renders correctly.
+
+With RefractionRatio 1 and a huge FresnelPower, ice is invisible against a skybox of the same
+cube map; with the defaults it is clearly visible. Run with Debian's /usr/bin/python3.
+"""
+import sys
+
+import vtk
+import vtkice
+
+
+def grab(window):
+    capture = vtk.vtkWindowToImageFilter()
+    capture.SetInput(window)
+    capture.SetInputBufferTypeToRGB()
+    capture.ReadFrontBufferOff()
+    capture.Update()
+    return capture.GetOutput()
+
+
+def difference(a, b, x0, x1, y0, y1):
+    total = 0.0
+    count = 0
+    for y in range(y0, y1):
+        for x in range(x0, x1):
+            total += max(abs(a.GetScalarComponentAsDouble(x, y, 0, c) -
+                             b.GetScalarComponentAsDouble(x, y, 0, c)) for c in range(3))
+            count += 1
+    return total / count
+
+
+def main():
+    mapper = vtkice.vtkIceMapper()
+    assert abs(mapper.GetRefractionRatio() - 1.0003 / 1.3091) < 1e-12
+    assert mapper.GetFresnelPower() == 3.0
+    assert abs(mapper.GetBackNormalWeight() - 0.33) < 1e-12
+    mapper.SetBackNormalWeight(5.0)
+    assert mapper.GetBackNormalWeight() == 1.0, "BackNormalWeight is clamped to [0, 1]"
+    mapper.SetBackNormalWeight(0.33)
+
+    sky = vtkice.vtkIceCubeMapSource()
+    sky.SetFaceSize(128)
+    texture = vtk.vtkTexture()
+    sky.ConfigureTexture(texture)
+    renderer = vtk.vtkRenderer()
+    renderer.SetEnvironmentTexture(texture)
+    skybox = vtk.vtkSkybox()
+    skybox.SetTexture(texture)
+    renderer.AddActor(skybox)
+
+    sphere = vtk.vtkSphereSource()
+    sphere.SetThetaResolution(64)
+    sphere.SetPhiResolution(64)
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    ice = vtk.vtkActor()
+    ice.SetMapper(mapper)
+    renderer.AddActor(ice)
+
+    window = vtk.vtkRenderWindow()
+    window.SetSize(160, 160)
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0.0, 0.3, 3.0)
+    camera.SetFocalPoint(0.0, 0.0, 0.0)
+    renderer.ResetCameraClippingRange()
+
+    # The sphere covers the central square of the image in every render below.
+    box = (60, 100, 60, 100)
+    ice.VisibilityOff()
+    window.Render()
+    background = grab(window)
+
+    ice.VisibilityOn()
+    mapper.SetRefractionRatio(1.0)
+    mapper.SetFresnelPower(1.0e6)
+    window.Render()
+    invisible = difference(background, grab(window), *box)
+
+    mapper.SetRefractionRatio(1.0003 / 1.3091)
+    mapper.SetFresnelPower(3.0)
+    window.Render()
+    visible = difference(background, grab(window), *box)
+
+    print("eta 1: mean difference %.3f/255; default ice: %.3f/255" % (invisible, visible))
+    assert invisible <= 1.0, "ice with eta 1 must be invisible against the skybox"
+    assert visible >= 5.0, "default ice must be visible"
+    print("1 passed, 0 failed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

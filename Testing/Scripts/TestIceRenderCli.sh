@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# ice-render's command line: renders on good input; on bad input prints one line starting with
+# "ice-render:" and exits non-zero, never crashing.
+# usage: TestIceRenderCli.sh ICE_RENDER WORK_DIR
+set -u
+ice_render=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+failures=0
+
+expect_ok() {
+  local name=$1; shift
+  if "$ice_render" "$@" >out.txt 2>err.txt && [ ! -s err.txt ]; then
+    echo "ok   $name"
+  else
+    echo "FAIL $name: exit $?, stderr: $(cat err.txt)"; failures=$((failures + 1))
+  fi
+}
+
+expect_error() {
+  local name=$1 pattern=$2; shift 2
+  "$ice_render" "$@" >out.txt 2>err.txt
+  local code=$?
+  local lines
+  lines=$(wc -l <err.txt)
+  if [ "$code" -ne 0 ] && [ "$code" -lt 128 ] && [ "$lines" -eq 1 ] &&
+     grep -q "^ice-render: .*$pattern" err.txt; then
+    echo "ok   $name: $(cat err.txt)"
+  else
+    echo "FAIL $name: exit $code, $lines stderr line(s): $(cat err.txt)"; failures=$((failures + 1))
+  fi
+}
+
+expect_ok "sphere to a named file" --model sphere --size 64x48 --out sphere.png
+[ -s sphere.png ] || { echo "FAIL sphere.png was not written"; failures=$((failures + 1)); }
+expect_ok "block, test pattern" --model block --env test --size 64x48 --out block.png
+/usr/bin/python3 - <<'PY'
+import vtk
+s = vtk.vtkSphereSource()
+w = vtk.vtkSTLWriter(); w.SetInputConnection(s.GetOutputPort()); w.SetFileName("ball.stl"); w.Write()
+w = vtk.vtkXMLPolyDataWriter(); w.SetInputConnection(s.GetOutputPort()); w.SetFileName("ball.vtp"); w.Write()
+PY
+expect_ok "STL file" --model ball.stl --size 64x48 --out stl.png
+expect_ok "VTP file" --model ball.vtp --size 64x48 --out vtp.png
+mkdir -p faces && for f in px nx py ny pz nz; do cp sphere.png faces/$f.png; done
+expect_error "non-square faces" "square" --env faces --size 64x48 --out x.png
+mkdir -p cube && for f in px nx py ny pz nz; do "$ice_render" --model sphere --size 32x32 --out cube/$f.png >/dev/null; done
+expect_ok "six face images" --env cube --size 64x48 --out cube.png
+
+expect_error "unknown option" "unknown argument" --frobnicate
+expect_error "missing value" "needs a value" --model
+expect_error "bad size" "bad --size" --size 10by10
+expect_error "missing model file" "cannot open" --model does-not-exist.stl
+expect_error "unknown model type" "unknown model" --model notes.txt
+printf 'this is not an STL file\n' >garbage.stl
+expect_error "corrupt STL" "model" --model garbage.stl
+printf '<VTKFile broken' >garbage.vtp
+expect_error "corrupt VTP" "model" --model garbage.vtp
+expect_error "missing environment" "environment" --env no-such-folder
+expect_error "unwritable output" "cannot write" --out /no/such/dir/ice.png
+
+if [ "$failures" -eq 0 ]; then echo "ice-render CLI: all checks passed"; fi
+exit "$failures"

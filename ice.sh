@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# VTK Ice's entry point, used by the README's Quick start and by CI.
+#   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
+#   ./ice.sh test [ctest options]         install what is missing, build, run every test
+# Rendering needs an X server: without a working DISPLAY the commands run under Xvfb.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+build_dir=${VTKICE_BUILD_DIR:-build}
+xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
+
+build() {
+  bash .ci/install-deps.sh
+  if [ ! -f "$build_dir/build.ninja" ]; then
+    cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$build_dir"
+}
+
+with_display() {
+  if [ -n "${DISPLAY:-}" ] && command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1; then
+    "$@"
+  else
+    "${xvfb[@]}" "$@"
+  fi
+}
+
+command=${1:-}
+[ $# -gt 0 ] && shift
+case "$command" in
+  render)
+    build
+    with_display "$build_dir/bin/ice-render" "$@"
+    ;;
+  test)
+    build
+    with_display ctest --test-dir "$build_dir" --output-on-failure "$@"
+    ;;
+  *)
+    echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" >&2
+    exit 2
+    ;;
+esac
