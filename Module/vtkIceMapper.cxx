@@ -5,6 +5,7 @@
 #include "vtkIceShaderSections.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
+#include "vtkIceTwoSidedFS.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -16,6 +17,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
@@ -25,6 +28,8 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTexture.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include <cmath>
 
@@ -186,11 +191,45 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
+  if (this->BackfaceNormalTexture)
+  {
+    this->BackfaceNormalTexture->Deactivate();
+  }
   if (this->ActiveEnvironment)
   {
     this->ActiveEnvironment->PostRender(ren);
     this->ActiveEnvironment = nullptr;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetBackfaceNormalTexture(vtkTextureObject* texture)
+{
+  // Not Modified(): the texture changes every frame and is a uniform, not a pipeline change.
+  this->BackfaceNormalTexture = texture;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIceMapper::GetBackfaceNormalTexture()
+{
+  return this->BackfaceNormalTexture;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::UseTwoSidedShader() const
+{
+  return this->TwoSidedRefraction && this->BackfaceNormalTexture != nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  // The superclass must always run: it also updates the light complexity.
+  const bool superclassNeeds = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  auto built = this->TwoSidedShaderBuilt.find(&cellBO);
+  const bool variantChanged =
+    built != this->TwoSidedShaderBuilt.end() && built->second != this->UseTwoSidedShader();
+  return superclassNeeds || variantChanged;
 }
 
 //------------------------------------------------------------------------------
@@ -209,6 +248,8 @@ void vtkIceMapper::ReplaceShaderValues(
     const std::string optics = vtkIceOptics;
     const std::string vs = vtkIceSurfaceVS;
     const std::string fs = vtkIceSurfaceFS;
+    const bool twoSided = this->UseTwoSidedShader();
+    this->TwoSidedShaderBuilt[this->LastBoundBO] = twoSided;
     std::string vsSource = shaders[vtkShader::Vertex]->GetSource();
     std::string fsSource = shaders[vtkShader::Fragment]->GetSource();
     vtkShaderProgram::Substitute(vsSource, "//VTK::Normal::Dec",
@@ -221,6 +262,15 @@ void vtkIceMapper::ReplaceShaderValues(
         "//VTK::Normal::Dec", optics + vtkIceShaderSections::Get(fs, "Dec")));
     vtkShaderProgram::Substitute(fsSource, "//VTK::Light::Impl",
       vtkIceShaderSections::AfterTag("//VTK::Light::Impl", vtkIceShaderSections::Get(fs, "Impl")));
+    if (twoSided)
+    {
+      const std::string twoSidedCode = vtkIceTwoSidedFS;
+      vtkShaderProgram::Substitute(fsSource, "//VTK::Normal::Dec",
+        vtkIceShaderSections::AfterTag(
+          "//VTK::Normal::Dec", vtkIceShaderSections::Get(twoSidedCode, "Dec")));
+      vtkShaderProgram::Substitute(fsSource, "//ICEHOOK::RefractionNormal",
+        vtkIceShaderSections::Get(twoSidedCode, "Impl"));
+    }
     shaders[vtkShader::Vertex]->SetSource(vsSource);
     shaders[vtkShader::Fragment]->SetSource(fsSource);
   }
@@ -268,6 +318,20 @@ void vtkIceMapper::SetMapperShaderParameters(
   program->SetUniformf("iceRefractionRatio", static_cast<float>(this->RefractionRatio));
   program->SetUniformf("iceFresnelPower", static_cast<float>(this->FresnelPower));
   program->SetUniformi("iceEnvironment", this->ActiveEnvironment->GetTextureUnit());
+
+  if (this->UseTwoSidedShader() && program->IsUniformUsed("iceBackNormals"))
+  {
+    // The back-normal texture covers the renderer's viewport, which starts at the current GL
+    // viewport's origin in whatever framebuffer this draw goes to.
+    int viewport[4];
+    static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())
+      ->GetState()
+      ->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+    this->BackfaceNormalTexture->Activate();
+    program->SetUniformi("iceBackNormals", this->BackfaceNormalTexture->GetTextureUnit());
+    program->SetUniform2i("iceViewportOrigin", viewport);
+    program->SetUniformf("iceBackNormalWeight", static_cast<float>(this->BackNormalWeight));
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -287,6 +351,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RefractionRatio: " << this->RefractionRatio << "\n";
   os << indent << "FresnelPower: " << this->FresnelPower << "\n";
   os << indent << "BackNormalWeight: " << this->BackNormalWeight << "\n";
+  os << indent << "TwoSidedRefraction: " << (this->TwoSidedRefraction ? "On" : "Off") << "\n";
   os << indent << "IceColor: (" << this->IceColor[0] << ", " << this->IceColor[1] << ", "
      << this->IceColor[2] << ")\n";
 }

@@ -11,6 +11,10 @@
  * with RefractionRatio 1 disappears against a skybox of the same cube map. Without such a texture
  * the mapper warns once and uses a small built-in sky.
  *
+ * With vtkIcePass set on the renderer, refraction is two-sided (paper eq 1): the refraction
+ * normal blends the front normal with the back-face normal found behind each pixel, weighted by
+ * BackNormalWeight. Without the pass, or with TwoSidedRefraction off, refraction is one-sided.
+ *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn.
  */
@@ -21,8 +25,11 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkSmartPointer.h" // for members
 
+#include <map> // for members
+
 class vtkPolyData;
 class vtkTexture;
+class vtkTextureObject;
 
 class RENDERINGICE_EXPORT vtkIceMapper : public vtkOpenGLPolyDataMapper
 {
@@ -56,6 +63,25 @@ public:
    */
   vtkSetClampMacro(BackNormalWeight, double, 0.0, 1.0);
   vtkGetMacro(BackNormalWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Two-sided refraction (eq 1) when vtkIcePass supplies back-face normals. Default on; off gives
+   * the one-sided result for comparison.
+   */
+  vtkSetMacro(TwoSidedRefraction, bool);
+  vtkGetMacro(TwoSidedRefraction, bool);
+  vtkBooleanMacro(TwoSidedRefraction, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The back-face normal texture of the current frame (RGB world normal, alpha coverage, at
+   * viewport size). vtkIcePass sets it before rendering the scene and clears it afterwards.
+   */
+  void SetBackfaceNormalTexture(vtkTextureObject* texture);
+  vtkTextureObject* GetBackfaceNormalTexture();
   ///@}
 
   ///@{
@@ -98,6 +124,10 @@ protected:
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  // Whether the shader being built samples back-face normals.
+  bool UseTwoSidedShader() const;
 
   // Checks the input and builds the polydata actually drawn (input plus ice normals).
   bool PrepareInput(vtkPolyData* input);
@@ -110,6 +140,10 @@ protected:
   double FresnelPower;
   double BackNormalWeight;
   double IceColor[3];
+  bool TwoSidedRefraction = true;
+
+  vtkSmartPointer<vtkTextureObject> BackfaceNormalTexture;
+  std::map<const vtkOpenGLHelper*, bool> TwoSidedShaderBuilt;
 
   vtkSmartPointer<vtkPolyData> PreparedInput;
   vtkMTimeType PreparedInputTime = 0;

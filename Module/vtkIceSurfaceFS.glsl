@@ -12,7 +12,9 @@ uniform vec3 iceTint;
     vec3 nFront = normalize(iceNormalWC);
     if (gl_FrontFacing == false) { nFront = -nFront; }
     vec3 nRefract = nFront;
+    //ICEHOOK::RefractionNormal
     vec3 refracted = texture(iceEnvironment, iceRefract(e, nRefract, iceRefractionRatio)).rgb;
     vec3 reflected = texture(iceEnvironment, iceReflect(e, nFront)).rgb;
     gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(iceFresnelFactor, 0.0, 1.0));
   }
+  //ICEHOOK::Output

@@ -149,8 +149,8 @@ void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double dire
   vtkMath::Normalize(direction);
 }
 
-double IntersectSphere(
-  const double origin[3], const double direction[3], const double center[3], double radius)
+bool IntersectSphere(const double origin[3], const double direction[3], const double center[3],
+  double radius, double& tNear, double& tFar)
 {
   double oc[3];
   vtkMath::Subtract(origin, center, oc);
@@ -159,33 +159,37 @@ double IntersectSphere(
   const double discriminant = b * b - c;
   if (discriminant < 0.0)
   {
-    return -1.0;
+    return false;
   }
-  const double t = -b - std::sqrt(discriminant);
-  return t > 0.0 ? t : -1.0;
+  tNear = -b - std::sqrt(discriminant);
+  tFar = -b + std::sqrt(discriminant);
+  return tNear > 0.0;
 }
 
 std::vector<bool> SphereInterior(
   vtkRenderer* renderer, const double center[3], double radius, int margin)
 {
+  const int* windowSize = renderer->GetRenderWindow()->GetSize();
+  const int width = windowSize[0];
+  const int* origin = renderer->GetOrigin();
   const int* size = renderer->GetSize();
-  const int width = size[0];
-  const int height = size[1];
-  std::vector<bool> hit(static_cast<size_t>(width) * height);
-  for (int y = 0; y < height; ++y)
+  std::vector<bool> hit(static_cast<size_t>(width) * windowSize[1], false);
+  for (int y = origin[1]; y < origin[1] + size[1]; ++y)
   {
-    for (int x = 0; x < width; ++x)
+    for (int x = origin[0]; x < origin[0] + size[0]; ++x)
     {
-      double origin[3];
+      double eye[3];
       double direction[3];
-      PixelRay(renderer, x, y, origin, direction);
-      hit[y * width + x] = IntersectSphere(origin, direction, center, radius) > 0.0;
+      double tNear;
+      double tFar;
+      PixelRay(renderer, x, y, eye, direction);
+      hit[y * width + x] = IntersectSphere(eye, direction, center, radius, tNear, tFar);
     }
   }
   std::vector<bool> interior(hit.size(), false);
-  for (int y = margin; y < height - margin; ++y)
+  for (int y = origin[1] + margin; y < origin[1] + size[1] - margin; ++y)
   {
-    for (int x = margin; x < width - margin; ++x)
+    for (int x = origin[0] + margin; x < origin[0] + size[0] - margin; ++x)
     {
       bool all = true;
       for (int dy = -margin; dy <= margin && all; ++dy)
@@ -199,6 +203,61 @@ std::vector<bool> SphereInterior(
     }
   }
   return interior;
+}
+
+Stats CompareSphereWithReference(vtkRenderer* renderer, const Image& image, const double center[3],
+  double radius, const vtkIceOpticsReference::Material& material,
+  const vtkIceCubeMapSource* environment, bool twoSided)
+{
+  using glm::dvec3;
+  auto sample = [environment](const dvec3& d) {
+    double rgb[3];
+    const double dir[3] = { d.x, d.y, d.z };
+    environment->Evaluate(dir, rgb);
+    return dvec3(rgb[0], rgb[1], rgb[2]);
+  };
+  const std::vector<bool> interior = SphereInterior(renderer, center, radius, 3);
+  const dvec3 c(center[0], center[1], center[2]);
+  std::vector<double> differences;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      if (!interior[y * image.Width + x])
+      {
+        continue;
+      }
+      double origin[3];
+      double direction[3];
+      double tNear;
+      double tFar;
+      PixelRay(renderer, x, y, origin, direction);
+      IntersectSphere(origin, direction, center, radius, tNear, tFar);
+      const dvec3 o(origin[0], origin[1], origin[2]);
+      const dvec3 e(direction[0], direction[1], direction[2]);
+      const dvec3 nFront = glm::normalize(o + tNear * e - c);
+      const dvec3 nBack = glm::normalize(o + tFar * e - c);
+      const dvec3 expected = 255.0 *
+        vtkIceOpticsReference::Shade(e, nFront, twoSided ? &nBack : nullptr, material, sample);
+      const unsigned char* pixel = image.At(x, y);
+      double worst = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        worst = std::max(worst, std::abs(pixel[k] - expected[k]));
+      }
+      differences.push_back(worst);
+    }
+  }
+  return Summarize(differences);
+}
+
+bool ReportReference(const std::string& name, const Stats& stats, size_t minimumPixels)
+{
+  const bool ok = stats.Count >= minimumPixels && stats.Mean <= 2.0 && stats.P99 <= 8.0;
+  std::cout << (ok ? "ok   " : "FAIL ") << name << ": " << stats.Count
+            << " interior pixels, |rendered - reference| mean " << stats.Mean << "/255, p99 "
+            << stats.P99 << "/255, max " << stats.Max << "/255\n";
+  return ok;
 }
 
 void MessageRecorder::Execute(vtkObject*, unsigned long event, void* data)

@@ -6,9 +6,12 @@
 #include "vtkCommand.h"
 #include "vtkSmartPointer.h"
 
+#include "vtkIceOpticsReference.h"
+
 #include <string>
 #include <vector>
 
+class vtkIceCubeMapSource;
 class vtkObject;
 class vtkRenderer;
 class vtkRenderWindow;
@@ -47,17 +50,30 @@ bool CheckImage(int argc, char* argv[], vtkRenderWindow* window);
 // A cube-map texture from vtkIceCubeMapSource.
 vtkSmartPointer<vtkTexture> MakeCubeMap(int pattern, int faceSize);
 
-// The ray through the centre of pixel (x, y) of `renderer` (perspective camera), in world space.
+// The ray through the centre of window pixel (x, y) (display coordinates) of `renderer`, in world
+// space.
 void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double direction[3]);
 
-// Distance along the unit `direction` to the first intersection with the sphere, or -1.
-double IntersectSphere(
-  const double origin[3], const double direction[3], const double center[3], double radius);
+// Distances along the unit `direction` to the near and far intersections with the sphere; false
+// when the ray misses it or the sphere is behind.
+bool IntersectSphere(const double origin[3], const double direction[3], const double center[3],
+  double radius, double& tNear, double& tFar);
 
-// For each pixel of a width x height image: does the ray through it hit the sphere with at least
-// `margin` pixels of hits around it (so silhouette pixels are excluded)? Row 0 is the bottom row.
+// Window pixels of `renderer`'s viewport whose ray hits the sphere with hits on all pixels within
+// `margin` too (so silhouette pixels are excluded). Indexed y * windowWidth + x.
 std::vector<bool> SphereInterior(
   vtkRenderer* renderer, const double center[3], double radius, int margin);
+
+// Compares every interior pixel (margin 3) of an ice sphere in `renderer` with the GLM reference
+// of the ice optics, sampling `environment` analytically. Two-sided uses the sphere's analytic
+// back normal at the far intersection. Differences are the largest channel error in 0..255.
+Stats CompareSphereWithReference(vtkRenderer* renderer, const Image& image, const double center[3],
+  double radius, const vtkIceOpticsReference::Material& material,
+  const vtkIceCubeMapSource* environment, bool twoSided);
+
+// Prints the figures and checks the reference bounds of the foundation issue: at least
+// `minimumPixels` compared, mean <= 2/255, p99 <= 8/255.
+bool ReportReference(const std::string& name, const Stats& stats, size_t minimumPixels);
 
 // Records the error and warning messages an object emits (and keeps them off the console).
 class MessageRecorder : public vtkCommand

@@ -1,11 +1,12 @@
 // Renders ice spheres in a synthetic cube map and compares every interior pixel with the GLM
-// reference of eqs 2-4 (vtkIceOpticsReference.h) evaluated for that pixel's view ray.
+// reference (vtkIceOpticsReference.h) evaluated for that pixel's view ray: one-sided (eqs 2-4)
+// without vtkIcePass, and two-sided (eq 1 with the sphere's analytic back normal) with it.
 // Three placements: at the origin, moved/rotated/scaled by the actor, and far from the origin
 // (where VTK shifts and scales the vertex buffer).
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
-#include "vtkIceOpticsReference.h"
+#include "vtkIcePass.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -16,8 +17,8 @@
 #include "vtkSphereSource.h"
 #include "vtkTexture.h"
 
-#include <cmath>
 #include <iostream>
+#include <string>
 
 namespace
 {
@@ -31,10 +32,20 @@ struct Placement
   double RotationY;
 };
 
-bool CheckPlacement(const Placement& placement)
+enum class Mode
+{
+  OneSided,          // no vtkIcePass
+  TwoSided,          // vtkIcePass, TwoSidedRefraction on
+  TwoSidedSwitchOff, // vtkIcePass, TwoSidedRefraction off: must equal one-sided
+};
+
+bool CheckPlacement(const Placement& placement, Mode mode)
 {
   vtkNew<vtkIceCubeMapSource> pattern;
   pattern->SetPatternToDirectionTest();
+  pattern->SetFaceSize(256);
+  vtkNew<vtkTexture> environment;
+  pattern->ConfigureTexture(environment);
 
   vtkNew<vtkSphereSource> sphere;
   sphere->SetCenter(placement.SourceCenter[0], placement.SourceCenter[1], placement.SourceCenter[2]);
@@ -44,6 +55,7 @@ bool CheckPlacement(const Placement& placement)
 
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(sphere->GetOutputPort());
+  mapper->SetTwoSidedRefraction(mode == Mode::TwoSided);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->SetPosition(placement.Position[0], placement.Position[1], placement.Position[2]);
@@ -51,8 +63,13 @@ bool CheckPlacement(const Placement& placement)
   actor->RotateY(placement.RotationY);
 
   vtkNew<vtkRenderer> renderer;
-  renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::DirectionTest, 256));
+  renderer->SetEnvironmentTexture(environment);
   renderer->AddActor(actor);
+  vtkNew<vtkIcePass> icePass;
+  if (mode != Mode::OneSided)
+  {
+    renderer->SetPass(icePass);
+  }
   vtkNew<vtkRenderWindow> window;
   window->SetSize(300, 300);
   window->SetOffScreenRendering(1);
@@ -62,54 +79,19 @@ bool CheckPlacement(const Placement& placement)
     placement.SourceCenter[2], 1.0 };
   actor->GetMatrix()->MultiplyPoint(center, center);
   const double radius = placement.SourceRadius * placement.Scale;
-
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(center);
   camera->SetPosition(center[0] + 0.9, center[1] + 1.2, center[2] + 3.6 * radius);
   renderer->ResetCameraClippingRange();
   window->Render();
 
-  const IceTest::Image image = IceTest::Capture(window);
-  const std::vector<bool> interior = IceTest::SphereInterior(renderer, center, radius, 3);
   const vtkIceOpticsReference::Material material;
-  auto environment = [&pattern](const glm::dvec3& d) {
-    double rgb[3];
-    const double dir[3] = { d.x, d.y, d.z };
-    pattern->Evaluate(dir, rgb);
-    return glm::dvec3(rgb[0], rgb[1], rgb[2]);
-  };
-
-  std::vector<double> differences;
-  for (int y = 0; y < image.Height; ++y)
-  {
-    for (int x = 0; x < image.Width; ++x)
-    {
-      if (!interior[y * image.Width + x])
-      {
-        continue;
-      }
-      double origin[3];
-      double direction[3];
-      IceTest::PixelRay(renderer, x, y, origin, direction);
-      const double t = IceTest::IntersectSphere(origin, direction, center, radius);
-      const glm::dvec3 e(direction[0], direction[1], direction[2]);
-      const glm::dvec3 hit = glm::dvec3(origin[0], origin[1], origin[2]) + t * e;
-      const glm::dvec3 n = glm::normalize(hit - glm::dvec3(center[0], center[1], center[2]));
-      const glm::dvec3 expected =
-        255.0 * vtkIceOpticsReference::Shade(e, n, nullptr, material, environment);
-      const unsigned char* pixel = image.At(x, y);
-      double worst = 0.0;
-      for (int c = 0; c < 3; ++c)
-      {
-        worst = std::max(worst, std::abs(pixel[c] - expected[c]));
-      }
-      differences.push_back(worst);
-    }
-  }
-  const IceTest::Stats stats = IceTest::Summarize(differences);
-  std::cout << placement.Name << ": " << stats.Count << " interior pixels, |rendered - reference| mean "
-            << stats.Mean << "/255, p99 " << stats.P99 << "/255, max " << stats.Max << "/255\n";
-  return stats.Count > 20000 && stats.Mean <= 2.0 && stats.P99 <= 8.0;
+  const IceTest::Stats stats = IceTest::CompareSphereWithReference(renderer,
+    IceTest::Capture(window), center, radius, material, pattern, mode == Mode::TwoSided);
+  const char* modeName = mode == Mode::OneSided ? "one-sided"
+    : mode == Mode::TwoSided                    ? "two-sided"
+                                                : "pass, two-sided off";
+  return IceTest::ReportReference(std::string(placement.Name) + ", " + modeName, stats, 20000);
 }
 }
 
@@ -123,7 +105,10 @@ int TestIceMapperReference(int, char*[])
   bool ok = true;
   for (const Placement& placement : placements)
   {
-    ok = CheckPlacement(placement) && ok;
+    for (Mode mode : { Mode::OneSided, Mode::TwoSided, Mode::TwoSidedSwitchOff })
+    {
+      ok = CheckPlacement(placement, mode) && ok;
+    }
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,67 @@
+/**
+ * @class   vtkIcePass
+ * @brief   The render pass that gives a renderer's ice its two-sided refraction.
+ *
+ * Set it on a renderer (`renderer->SetPass(icePass)`). Each frame it finds the visible props whose
+ * mapper is a vtkIceMapper, runs the ice sub-passes for them, hands their textures to the ice
+ * mappers, and then renders the whole scene with its delegate pass (by default a
+ * vtkRenderStepsPass, so the rest of the scene renders as without the pass). A frame without ice
+ * is exactly the delegate's frame.
+ *
+ * Sub-passes, in the order they run before the delegate:
+ * 1. environment (cube map of the scene around each ice prop; reserved for vtkIceCubeMapPass),
+ * 2. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1),
+ * 3. depth interval (front and back depth of the ice; reserved for vtkIceDepthIntervalPass).
+ *
+ * @sa vtkIceMapper vtkIceBackfaceNormalPass
+ */
+#ifndef vtkIcePass_h
+#define vtkIcePass_h
+
+#include "RenderingIceModule.h" // for export macro
+#include "vtkRenderPass.h"
+
+class vtkIceBackfaceNormalPass;
+
+class RENDERINGICE_EXPORT vtkIcePass : public vtkRenderPass
+{
+public:
+  static vtkIcePass* New();
+  vtkTypeMacro(vtkIcePass, vtkRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The pass that renders the scene itself. Default: a vtkRenderStepsPass.
+   */
+  virtual void SetDelegatePass(vtkRenderPass* pass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  ///@}
+
+  /**
+   * The back-face normal sub-pass (always present).
+   */
+  vtkGetObjectMacro(BackfaceNormalPass, vtkIceBackfaceNormalPass);
+
+  /**
+   * Number of ice props found in the last Render.
+   */
+  vtkGetMacro(NumberOfIceProps, int);
+
+protected:
+  vtkIcePass();
+  ~vtkIcePass() override;
+
+  vtkRenderPass* DelegatePass = nullptr;
+  vtkIceBackfaceNormalPass* BackfaceNormalPass = nullptr;
+  int NumberOfIceProps = 0;
+
+private:
+  vtkIcePass(const vtkIcePass&) = delete;
+  void operator=(const vtkIcePass&) = delete;
+};
+
+#endif
