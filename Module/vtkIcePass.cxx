@@ -4,6 +4,10 @@
 #include "vtkIceMapper.h"
 
 #include "vtkActor.h"
+#include "vtkDualDepthPeelingPass.h"
+#include "vtkNew.h"
+#include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkTranslucentPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
@@ -27,16 +31,43 @@ vtkIceMapper* IceMapperOf(vtkProp* prop)
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
 {
-  vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
-  this->SetDelegatePass(steps);
-  steps->Delete();
+  this->DefaultDelegate = vtkRenderStepsPass::New();
+  this->SetDelegatePass(this->DefaultDelegate);
+
+  vtkNew<vtkTranslucentPass> translucent;
+  vtkOrderIndependentTranslucentPass* oit = vtkOrderIndependentTranslucentPass::New();
+  oit->SetTranslucentPass(translucent);
+  this->OrderIndependentTranslucency = oit;
+  vtkDualDepthPeelingPass* peeling = vtkDualDepthPeelingPass::New();
+  peeling->SetTranslucentPass(translucent);
+  this->DepthPeeling = peeling;
+
   this->BackfaceNormalPass = vtkIceBackfaceNormalPass::New();
+}
+
+//------------------------------------------------------------------------------
+void vtkIcePass::ConfigureDefaultDelegate(vtkRenderer* renderer)
+{
+  if (this->DelegatePass != this->DefaultDelegate)
+  {
+    return;
+  }
+  vtkRenderPass* translucent =
+    renderer->GetUseDepthPeeling() ? this->DepthPeeling : this->OrderIndependentTranslucency;
+  vtkRenderStepsPass* steps = static_cast<vtkRenderStepsPass*>(this->DefaultDelegate);
+  if (steps->GetTranslucentPass() != translucent)
+  {
+    steps->SetTranslucentPass(translucent);
+  }
 }
 
 //------------------------------------------------------------------------------
 vtkIcePass::~vtkIcePass()
 {
   this->SetDelegatePass(nullptr);
+  this->DefaultDelegate->Delete();
+  this->OrderIndependentTranslucency->Delete();
+  this->DepthPeeling->Delete();
   this->BackfaceNormalPass->Delete();
 }
 
@@ -76,6 +107,7 @@ void vtkIcePass::Render(const vtkRenderState* s)
     }
   }
 
+  this->ConfigureDefaultDelegate(s->GetRenderer());
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
 
@@ -92,9 +124,13 @@ void vtkIcePass::Render(const vtkRenderState* s)
 void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
-  if (this->DelegatePass)
+  for (vtkRenderPass* pass : { this->DelegatePass, this->DefaultDelegate,
+         this->OrderIndependentTranslucency, this->DepthPeeling })
   {
-    this->DelegatePass->ReleaseGraphicsResources(w);
+    if (pass)
+    {
+      pass->ReleaseGraphicsResources(w);
+    }
   }
 }
 

@@ -5,8 +5,10 @@
  * Set it on a renderer (`renderer->SetPass(icePass)`). Each frame it finds the visible props whose
  * mapper is a vtkIceMapper, runs the ice sub-passes for them, hands their textures to the ice
  * mappers, and then renders the whole scene with its delegate pass (by default a
- * vtkRenderStepsPass, so the rest of the scene renders as without the pass). A frame without ice
- * is exactly the delegate's frame.
+ * vtkRenderStepsPass set up like the renderer's own default rendering: order-independent
+ * translucency, or dual depth peeling when the renderer's UseDepthPeeling is on). A frame without
+ * ice is exactly the delegate's frame, and with the default delegate pixel for pixel the frame
+ * the renderer draws without any pass.
  *
  * Sub-passes, in the order they run before the delegate:
  * 1. environment (cube map of the scene around each ice prop; reserved for vtkIceCubeMapPass),
@@ -55,7 +57,13 @@ protected:
   vtkIcePass();
   ~vtkIcePass() override;
 
+  // Matches the default delegate's translucent pass to the renderer's depth-peeling setting.
+  void ConfigureDefaultDelegate(vtkRenderer* renderer);
+
   vtkRenderPass* DelegatePass = nullptr;
+  vtkRenderPass* DefaultDelegate = nullptr;
+  vtkRenderPass* OrderIndependentTranslucency = nullptr;
+  vtkRenderPass* DepthPeeling = nullptr;
   vtkIceBackfaceNormalPass* BackfaceNormalPass = nullptr;
   int NumberOfIceProps = 0;
 
