@@ -2,6 +2,7 @@
 #include "IceScene.h"
 
 #include "vtkActor.h"
+#include "vtkIceMapper.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -21,12 +22,13 @@ namespace
 {
 const char* const Usage =
   "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|DIR] [--size WxH]\n"
-  "                  [--out FILE] [--interactive]\n"
+  "                  [--out FILE] [--one-sided] [--interactive]\n"
   "Renders a model as ice (default: the teapot in front of a procedural sky) to ice.png.\n"
   "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
   "  --env    sky, test, or a folder with cube faces px nx py ny pz nz (.png/.jpg/.bmp/.tif)\n"
   "  --size   image size, default 1024x768\n"
   "  --out    output PNG, default ice.png\n"
+  "  --one-sided  refract at the front face only (the default blends in the back face)\n"
   "  --interactive  open a window with a trackball camera instead of writing a file\n";
 
 struct Options
@@ -37,6 +39,7 @@ struct Options
   int Width = 1024;
   int Height = 768;
   bool Interactive = false;
+  bool OneSided = false;
 };
 
 int Fail(const std::string& message, int code)
@@ -76,6 +79,10 @@ int Parse(int argc, char* argv[], Options& options)
     else if (arg == "--interactive")
     {
       options.Interactive = true;
+    }
+    else if (arg == "--one-sided")
+    {
+      options.OneSided = true;
     }
     else if (arg == "--model" || arg == "--env" || arg == "--out" || arg == "--size")
     {
@@ -135,7 +142,8 @@ int main(int argc, char* argv[])
   }
 
   vtkNew<vtkRenderer> renderer;
-  IceScene::Populate(renderer, model, environment);
+  vtkActor* ice = IceScene::Populate(renderer, model, environment);
+  vtkIceMapper::SafeDownCast(ice->GetMapper())->SetTwoSidedRefraction(!options.OneSided);
   vtkNew<vtkRenderWindow> window;
   window->SetSize(options.Width, options.Height);
   window->AddRenderer(renderer);

@@ -3,6 +3,7 @@
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
+#include "vtkIcePass.h"
 #include "vtkIceTeapotSource.h"
 
 #include "vtkActor.h"
@@ -265,6 +266,8 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
 
 vtkActor* Populate(vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment)
 {
+  vtkNew<vtkIcePass> icePass;
+  renderer->SetPass(icePass);
   renderer->SetEnvironmentTexture(environment);
   vtkNew<vtkSkybox> skybox;
   skybox->SetTexture(environment);

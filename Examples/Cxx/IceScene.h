@@ -23,7 +23,8 @@ vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& er
 // Returns nullptr and sets `error` on failure.
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error);
 
-// Adds the skybox, the environment and an ice actor for `model`, and frames the camera.
+// Sets a vtkIcePass on the renderer (two-sided refraction), adds the skybox, the environment and
+// an ice actor for `model`, and frames the camera.
 // Returns the ice actor (its mapper is a vtkIceMapper).
 vtkActor* Populate(vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment);
 }

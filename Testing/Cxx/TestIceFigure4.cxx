@@ -4,7 +4,6 @@
 #include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "vtkIceMapper.h"
-#include "vtkIcePass.h"
 
 #include "vtkActor.h"
 #include "vtkNew.h"
@@ -32,12 +31,10 @@ int TestIceFigure4(int argc, char* argv[])
   window->SetSize(2 * halfWidth, height);
   window->SetOffScreenRendering(1);
   vtkActor* ice[2];
-  vtkNew<vtkIcePass> passes[2];
   vtkNew<vtkRenderer> renderers[2];
   for (int side = 0; side < 2; ++side)
   {
     renderers[side]->SetViewport(0.5 * side, 0.0, 0.5 * (side + 1), 1.0);
-    renderers[side]->SetPass(passes[side]);
     ice[side] = IceScene::Populate(renderers[side], teapot, environment);
     vtkIceMapper::SafeDownCast(ice[side]->GetMapper())->SetTwoSidedRefraction(side == 0);
     window->AddRenderer(renderers[side]);

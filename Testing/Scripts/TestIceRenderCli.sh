@@ -33,7 +33,7 @@ expect_error() {
 
 expect_ok "sphere to a named file" --model sphere --size 64x48 --out sphere.png
 [ -s sphere.png ] || { echo "FAIL sphere.png was not written"; failures=$((failures + 1)); }
-expect_ok "block, test pattern" --model block --env test --size 64x48 --out block.png
+expect_ok "block, test pattern, one-sided" --model block --env test --one-sided --size 64x48 --out block.png
 /usr/bin/python3 - <<'PY'
 import vtk
 s = vtk.vtkSphereSource()

@@ -1,0 +1,88 @@
+"""vtkIcePass from Python: two-sided refraction changes the ice, the one-sided switch restores the
+pass-less image exactly, and a scene without ice is unchanged by the pass.
+
+Run with Debian's /usr/bin/python3.
+"""
+import sys
+
+import vtk
+import vtkice
+
+
+def grab(window):
+    window.Render()
+    capture = vtk.vtkWindowToImageFilter()
+    capture.SetInput(window)
+    capture.SetInputBufferTypeToRGB()
+    capture.ReadFrontBufferOff()
+    capture.Update()
+    image = vtk.vtkImageData()
+    image.DeepCopy(capture.GetOutput())
+    return image
+
+
+def mean_difference(a, b, x0, x1, y0, y1):
+    total = 0.0
+    for y in range(y0, y1):
+        for x in range(x0, x1):
+            total += max(abs(a.GetScalarComponentAsDouble(x, y, 0, c) -
+                             b.GetScalarComponentAsDouble(x, y, 0, c)) for c in range(3))
+    return total / ((x1 - x0) * (y1 - y0))
+
+
+def main():
+    sky = vtkice.vtkIceCubeMapSource()
+    sky.SetFaceSize(128)
+    texture = vtk.vtkTexture()
+    sky.ConfigureTexture(texture)
+    renderer = vtk.vtkRenderer()
+    renderer.SetEnvironmentTexture(texture)
+    skybox = vtk.vtkSkybox()
+    skybox.SetTexture(texture)
+    renderer.AddActor(skybox)
+
+    teapot = vtkice.vtkIceTeapotSource()
+    mapper = vtkice.vtkIceMapper()
+    mapper.SetInputConnection(teapot.GetOutputPort())
+    ice = vtk.vtkActor()
+    ice.SetMapper(mapper)
+    renderer.AddActor(ice)
+
+    window = vtk.vtkRenderWindow()
+    window.SetSize(200, 150)
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0.0, 0.6, 4.0)
+    camera.SetFocalPoint(0.0, 0.0, 0.0)
+    renderer.ResetCameraClippingRange()
+    box = (80, 120, 60, 90)  # inside the teapot's body
+
+    without_pass = grab(window)
+    ice_pass = vtkice.vtkIcePass()
+    renderer.SetPass(ice_pass)
+    two_sided = grab(window)
+    assert ice_pass.GetNumberOfIceProps() == 1
+    mapper.TwoSidedRefractionOff()
+    one_sided = grab(window)
+
+    changed = mean_difference(without_pass, two_sided, *box)
+    restored = mean_difference(without_pass, one_sided, *box)
+    print("two-sided vs one-sided: %.2f/255; pass with two-sided off vs no pass: %.2f/255"
+          % (changed, restored))
+    assert changed >= 6.0, "two-sided refraction must change the ice"
+    assert restored == 0.0, "TwoSidedRefractionOff must give the one-sided image"
+
+    ice.VisibilityOff()
+    with_pass_no_ice = grab(window)
+    renderer.SetPass(None)
+    no_pass_no_ice = grab(window)
+    unchanged = mean_difference(with_pass_no_ice, no_pass_no_ice, 0, 200, 0, 150)
+    print("scene without ice, with vs without the pass: %.3f/255" % unchanged)
+    assert unchanged == 0.0
+    print("3 passed, 0 failed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
