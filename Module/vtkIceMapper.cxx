@@ -1,5 +1,6 @@
 #include "vtkIceMapper.h"
 
+#include "vtkIceCubeMapPass.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceOptics.h"
 #include "vtkIceShaderSections.h"
@@ -11,6 +12,8 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkOpenGLTexture.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -178,12 +181,34 @@ vtkTexture* vtkIceMapper::SelectEnvironment(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
+vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return actor && actor->GetVisibility() ? vtkIceMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
+{
+  vtkInformation* keys = act->GetPropertyKeys();
+  if (keys && keys->Has(vtkIceCubeMapPass::ENVIRONMENT()))
+  {
+    vtkTextureObject* cubeMap =
+      vtkTextureObject::SafeDownCast(keys->Get(vtkIceCubeMapPass::ENVIRONMENT()));
+    cubeMap->Activate();
+    return cubeMap;
+  }
+  this->ActiveEnvironment = this->SelectEnvironment(ren);
+  this->ActiveEnvironment->Render(ren);
+  return static_cast<vtkOpenGLTexture*>(this->ActiveEnvironment)->GetTextureObject();
+}
+
+//------------------------------------------------------------------------------
 void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   // Draw the prepared copy (input plus ice normals) instead of the raw input.
   this->CurrentInput = this->PreparedInput;
-  this->ActiveEnvironment = this->SelectEnvironment(ren);
-  this->ActiveEnvironment->Render(ren);
+  this->ActiveEnvironmentObject = this->BindEnvironment(ren, act);
   this->Superclass::RenderPieceStart(ren, act);
 }
 
@@ -200,6 +225,11 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
     this->ActiveEnvironment->PostRender(ren);
     this->ActiveEnvironment = nullptr;
   }
+  else if (this->ActiveEnvironmentObject)
+  {
+    this->ActiveEnvironmentObject->Deactivate();
+  }
+  this->ActiveEnvironmentObject = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -283,7 +313,7 @@ void vtkIceMapper::SetMapperShaderParameters(
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   vtkShaderProgram* program = cellBO.Program;
-  if (!program || !this->IsSurfaceHelper(&cellBO) || !this->ActiveEnvironment)
+  if (!program || !this->IsSurfaceHelper(&cellBO) || !this->ActiveEnvironmentObject)
   {
     return;
   }
@@ -317,7 +347,7 @@ void vtkIceMapper::SetMapperShaderParameters(
   program->SetUniform3f("iceTint", tint);
   program->SetUniformf("iceRefractionRatio", static_cast<float>(this->RefractionRatio));
   program->SetUniformf("iceFresnelPower", static_cast<float>(this->FresnelPower));
-  program->SetUniformi("iceEnvironment", this->ActiveEnvironment->GetTextureUnit());
+  program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());
 
   if (this->UseTwoSidedShader() && program->IsUniformUsed("iceBackNormals"))
   {

@@ -6,7 +6,8 @@
  * refracted (eq 2) and reflected (eq 3) about the surface normal, both directions sample an
  * environment cube map, and the two colours are mixed by a per-vertex Fresnel term (eq 4).
  *
- * The environment is the renderer's environment texture (vtkRenderer::SetEnvironmentTexture with a
+ * The environment is the prop's dynamic cube map when a vtkIceCubeMapPass renders one, otherwise
+ * the renderer's environment texture (vtkRenderer::SetEnvironmentTexture with a
  * vtkTexture that has CubeMapOn), looked up with the same world directions vtkSkybox uses, so ice
  * with RefractionRatio 1 disappears against a skybox of the same cube map. Without such a texture
  * the mapper warns once and uses a small built-in sky.
@@ -28,6 +29,7 @@
 #include <map> // for members
 
 class vtkPolyData;
+class vtkProp;
 class vtkTexture;
 class vtkTextureObject;
 
@@ -93,6 +95,11 @@ public:
   ///@}
 
   /**
+   * The vtkIceMapper of `prop` if it is a visible vtkActor drawn by one, else null.
+   */
+  static vtkIceMapper* GetIceMapperOf(vtkProp* prop);
+
+  /**
    * Draws the ice. Validates the input and adds normals before the usual OpenGL rendering.
    */
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
@@ -131,7 +138,9 @@ protected:
 
   // Checks the input and builds the polydata actually drawn (input plus ice normals).
   bool PrepareInput(vtkPolyData* input);
-  // The cube map the ice samples: the renderer's environment texture or the built-in sky.
+  // The cube map the ice samples: the prop's dynamic cube map, the renderer's environment texture
+  // or the built-in sky. Binds it and returns it.
+  vtkTextureObject* BindEnvironment(vtkRenderer* ren, vtkActor* act);
   vtkTexture* SelectEnvironment(vtkRenderer* ren);
   // Whether the helper being compiled draws surfaces (ice) rather than lines or points.
   bool IsSurfaceHelper(const vtkOpenGLHelper* helper) const;
@@ -151,7 +160,8 @@ protected:
   bool PreparedValid = false;
 
   vtkSmartPointer<vtkTexture> FallbackEnvironment;
-  vtkTexture* ActiveEnvironment = nullptr;
+  vtkTexture* ActiveEnvironment = nullptr;             // bound vtkTexture, if one is used
+  vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples
   bool WarnedNoEnvironment = false;
 
 private:

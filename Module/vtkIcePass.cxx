@@ -1,6 +1,7 @@
 #include "vtkIcePass.h"
 
 #include "vtkIceBackfaceNormalPass.h"
+#include "vtkIceCubeMapPass.h"
 #include "vtkIceMapper.h"
 
 #include "vtkActor.h"
@@ -18,15 +19,7 @@
 
 vtkStandardNewMacro(vtkIcePass);
 vtkCxxSetObjectMacro(vtkIcePass, DelegatePass, vtkRenderPass);
-
-namespace
-{
-vtkIceMapper* IceMapperOf(vtkProp* prop)
-{
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return actor && actor->GetVisibility() ? vtkIceMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-}
-}
+vtkCxxSetObjectMacro(vtkIcePass, CubeMapPass, vtkIceCubeMapPass);
 
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
@@ -65,6 +58,7 @@ void vtkIcePass::ConfigureDefaultDelegate(vtkRenderer* renderer)
 vtkIcePass::~vtkIcePass()
 {
   this->SetDelegatePass(nullptr);
+  this->SetCubeMapPass(nullptr);
   this->DefaultDelegate->Delete();
   this->OrderIndependentTranslucency->Delete();
   this->DepthPeeling->Delete();
@@ -85,7 +79,7 @@ void vtkIcePass::Render(const vtkRenderState* s)
   std::vector<vtkIceMapper*> iceMappers;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    if (vtkIceMapper* mapper = IceMapperOf(s->GetPropArray()[i]))
+    if (vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(s->GetPropArray()[i]))
     {
       iceProps.push_back(s->GetPropArray()[i]);
       iceMappers.push_back(mapper);
@@ -95,11 +89,16 @@ void vtkIcePass::Render(const vtkRenderState* s)
 
   // Picking renders ids, not ice: the sub-passes are not needed then.
   const bool runIcePasses = !iceProps.empty() && !s->GetRenderer()->GetSelector();
+  vtkRenderState iceState(s->GetRenderer());
+  iceState.SetPropArrayAndCount(iceProps.data(), static_cast<int>(iceProps.size()));
+  iceState.SetFrameBuffer(s->GetFrameBuffer());
   if (runIcePasses)
   {
-    vtkRenderState iceState(s->GetRenderer());
-    iceState.SetPropArrayAndCount(iceProps.data(), static_cast<int>(iceProps.size()));
-    iceState.SetFrameBuffer(s->GetFrameBuffer());
+    if (this->CubeMapPass)
+    {
+      this->CubeMapPass->Render(&iceState);
+      this->CubeMapPass->AttachCubeMaps(&iceState);
+    }
     this->BackfaceNormalPass->Render(&iceState);
     for (vtkIceMapper* mapper : iceMappers)
     {
@@ -117,6 +116,10 @@ void vtkIcePass::Render(const vtkRenderState* s)
     {
       mapper->SetBackfaceNormalTexture(nullptr);
     }
+    if (this->CubeMapPass)
+    {
+      this->CubeMapPass->DetachCubeMaps(&iceState);
+    }
   }
 }
 
@@ -124,6 +127,10 @@ void vtkIcePass::Render(const vtkRenderState* s)
 void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
+  if (this->CubeMapPass)
+  {
+    this->CubeMapPass->ReleaseGraphicsResources(w);
+  }
   for (vtkRenderPass* pass : { this->DelegatePass, this->DefaultDelegate,
          this->OrderIndependentTranslucency, this->DepthPeeling })
   {
@@ -139,5 +146,6 @@ void vtkIcePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "CubeMapPass: " << this->CubeMapPass << "\n";
   os << indent << "NumberOfIceProps: " << this->NumberOfIceProps << "\n";
 }

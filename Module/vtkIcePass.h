@@ -11,7 +11,9 @@
  * the renderer draws without any pass.
  *
  * Sub-passes, in the order they run before the delegate:
- * 1. environment (cube map of the scene around each ice prop; reserved for vtkIceCubeMapPass),
+ * 1. environment: with a vtkIceCubeMapPass set (SetCubeMapPass), each ice prop gets a cube map of
+ *    the scene around it (dynamic environment); without one, the renderer's environment texture
+ *    is used (static environment),
  * 2. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1),
  * 3. depth interval (front and back depth of the ice; reserved for vtkIceDepthIntervalPass).
  *
@@ -24,6 +26,7 @@
 #include "vtkRenderPass.h"
 
 class vtkIceBackfaceNormalPass;
+class vtkIceCubeMapPass;
 
 class RENDERINGICE_EXPORT vtkIcePass : public vtkRenderPass
 {
@@ -41,6 +44,15 @@ public:
    */
   virtual void SetDelegatePass(vtkRenderPass* pass);
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  ///@}
+
+  ///@{
+  /**
+   * The optional dynamic-environment sub-pass. Default null: ice reflects the renderer's
+   * environment texture.
+   */
+  virtual void SetCubeMapPass(vtkIceCubeMapPass* pass);
+  vtkGetObjectMacro(CubeMapPass, vtkIceCubeMapPass);
   ///@}
 
   /**
@@ -65,6 +77,7 @@ protected:
   vtkRenderPass* OrderIndependentTranslucency = nullptr;
   vtkRenderPass* DepthPeeling = nullptr;
   vtkIceBackfaceNormalPass* BackfaceNormalPass = nullptr;
+  vtkIceCubeMapPass* CubeMapPass = nullptr;
   int NumberOfIceProps = 0;
 
 private:

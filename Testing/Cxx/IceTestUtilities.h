@@ -8,6 +8,7 @@
 
 #include "vtkIceOpticsReference.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -64,12 +65,17 @@ bool IntersectSphere(const double origin[3], const double direction[3], const do
 std::vector<bool> SphereInterior(
   vtkRenderer* renderer, const double center[3], double radius, int margin);
 
+// The environment's colour (components in [0, 1]) of a world direction. A NaN component marks a
+// direction whose colour is ambiguous (for instance on an edge): pixels that need it are skipped.
+using Environment = std::function<glm::dvec3(const glm::dvec3&)>;
+Environment PatternEnvironment(const vtkIceCubeMapSource* source);
+
 // Compares every interior pixel (margin 3) of an ice sphere in `renderer` with the GLM reference
 // of the ice optics, sampling `environment` analytically. Two-sided uses the sphere's analytic
 // back normal at the far intersection. Differences are the largest channel error in 0..255.
 Stats CompareSphereWithReference(vtkRenderer* renderer, const Image& image, const double center[3],
-  double radius, const vtkIceOpticsReference::Material& material,
-  const vtkIceCubeMapSource* environment, bool twoSided);
+  double radius, const vtkIceOpticsReference::Material& material, const Environment& environment,
+  bool twoSided);
 
 // Prints the figures and checks the reference bounds of the foundation issue: at least
 // `minimumPixels` compared, mean <= 2/255, p99 <= 8/255.

@@ -87,7 +87,7 @@ bool CheckPlacement(const Placement& placement, Mode mode)
 
   const vtkIceOpticsReference::Material material;
   const IceTest::Stats stats = IceTest::CompareSphereWithReference(renderer,
-    IceTest::Capture(window), center, radius, material, pattern, mode == Mode::TwoSided);
+    IceTest::Capture(window), center, radius, material, IceTest::PatternEnvironment(pattern), mode == Mode::TwoSided);
   const char* modeName = mode == Mode::OneSided ? "one-sided"
     : mode == Mode::TwoSided                    ? "two-sided"
                                                 : "pass, two-sided off";

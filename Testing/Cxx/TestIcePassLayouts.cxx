@@ -68,7 +68,7 @@ bool Check(const std::string& name, vtkRenderer* renderer, const IceTest::Image&
   pattern->SetPatternToDirectionTest();
   return IceTest::ReportReference(name,
     IceTest::CompareSphereWithReference(
-      renderer, image, ice.Center, 1.0, material, pattern, true),
+      renderer, image, ice.Center, 1.0, material, IceTest::PatternEnvironment(pattern), true),
     minimumPixels);
 }
 

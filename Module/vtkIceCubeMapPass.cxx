@@ -1,0 +1,456 @@
+#include "vtkIceCubeMapPass.h"
+
+#include "vtkIceMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkProp3D.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkSmartPointer.h"
+#include "vtkTexture.h"
+#include "vtkTextureObject.h"
+#include "vtkTransform.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <vector>
+
+vtkStandardNewMacro(vtkIceCubeMapPass);
+vtkCxxSetObjectMacro(vtkIceCubeMapPass, DelegatePass, vtkRenderPass);
+vtkInformationKeyMacro(vtkIceCubeMapPass, ENVIRONMENT, ObjectBase);
+
+namespace
+{
+// A camera per OpenGL cube face, so that the rendered image's right and up axes are the face's
+// s and t axes (direction x up = right).
+struct FaceView
+{
+  double Direction[3];
+  double Up[3];
+};
+const FaceView Faces[6] = {
+  { { 1, 0, 0 }, { 0, -1, 0 } },
+  { { -1, 0, 0 }, { 0, -1, 0 } },
+  { { 0, 1, 0 }, { 0, 0, 1 } },
+  { { 0, -1, 0 }, { 0, 0, -1 } },
+  { { 0, 0, 1 }, { 0, -1, 0 } },
+  { { 0, 0, -1 }, { 0, -1, 0 } },
+};
+
+// Whether a box may be seen in the 90° frustum of `face` from `center`: the frustum is where the
+// face's axis coordinate dominates, |p_j| <= s p_k for the other axes j.
+bool IntersectsFace(const double bounds[6], const double center[3], int face)
+{
+  const int k = face / 2;
+  const double s = face % 2 ? -1.0 : 1.0;
+  for (int j = 0; j < 3; ++j)
+  {
+    if (j == k)
+    {
+      continue;
+    }
+    for (double q : { 1.0, -1.0 })
+    {
+      // Largest value of s p_k - q p_j over the box; negative means the box is outside.
+      const double pk = s > 0 ? bounds[2 * k + 1] - center[k] : center[k] - bounds[2 * k];
+      const double pj = q > 0 ? center[j] - bounds[2 * j] : bounds[2 * j + 1] - center[j];
+      if (pk + pj < 0.0)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+void HashCombine(size_t& seed, size_t value)
+{
+  seed ^= value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
+}
+
+// The props a cube map shows: visible 3D props that are not ice.
+std::vector<vtkProp*> SceneProps(vtkRenderer* renderer)
+{
+  std::vector<vtkProp*> scene;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && vtkProp3D::SafeDownCast(prop) &&
+      !vtkIceMapper::GetIceMapperOf(prop))
+    {
+      scene.push_back(prop);
+    }
+  }
+  return scene;
+}
+
+// Changes whenever what the cube map at `center` shows may have changed; camera-following lights
+// and the camera itself are left out on purpose.
+size_t SceneSignature(vtkRenderer* renderer, const std::vector<vtkProp*>& scene,
+  const double center[3], int faceSize)
+{
+  size_t seed = std::hash<int>()(faceSize);
+  for (int i = 0; i < 3; ++i)
+  {
+    HashCombine(seed, std::hash<double>()(center[i]));
+    HashCombine(seed, std::hash<double>()(renderer->GetBackground()[i]));
+    HashCombine(seed, std::hash<double>()(renderer->GetBackground2()[i]));
+  }
+  HashCombine(seed, std::hash<bool>()(renderer->GetGradientBackground()));
+  for (vtkProp* prop : scene)
+  {
+    HashCombine(seed, std::hash<const void*>()(prop));
+    HashCombine(seed, std::hash<vtkMTimeType>()(prop->GetRedrawMTime()));
+  }
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (light->LightTypeIsSceneLight())
+    {
+      HashCombine(seed, std::hash<const void*>()(light));
+      HashCombine(seed, std::hash<vtkMTimeType>()(light->GetMTime()));
+    }
+  }
+  return seed;
+}
+}
+
+class vtkIceCubeMapPass::vtkInternals
+{
+public:
+  struct CubeMap
+  {
+    vtkSmartPointer<vtkTextureObject> Texture;
+    size_t Signature = 0;
+    int NextFace = 0;
+    int PendingFaces = 0;
+    bool Rendered = false;
+  };
+  std::map<vtkProp*, CubeMap> Maps;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
+  vtkNew<vtkCamera> FaceCamera;
+  vtkNew<vtkTransform> LightTransform;
+  bool UpdateRequested = false;
+
+  // Renders the next pending face of `map` from `center`.
+  void RenderFace(vtkIceCubeMapPass* pass, vtkOpenGLRenderer* renderer, CubeMap& map,
+    const std::vector<vtkProp*>& scene, const double center[3]);
+
+private:
+  void Allocate(vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map);
+  void SetupCamera(int face, const double center[3], const std::vector<vtkProp*>& scene,
+    vtkCamera* mainCamera);
+};
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::vtkInternals::Allocate(
+  vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map)
+{
+  const unsigned int size = static_cast<unsigned int>(pass->FaceSize);
+  if (map.Texture && (map.Texture->GetWidth() != size || map.Texture->GetContext() != window))
+  {
+    map.Texture->ReleaseGraphicsResources(window);
+    map.Texture = nullptr;
+  }
+  if (!map.Texture)
+  {
+    map.Texture = vtkSmartPointer<vtkTextureObject>::New();
+    map.Texture->SetContext(window);
+    map.Texture->SetMinificationFilter(vtkTextureObject::Linear);
+    map.Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    map.Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    map.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    map.Texture->SetWrapR(vtkTextureObject::ClampToEdge);
+    void* noData[6] = { nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
+    map.Texture->CreateCubeFromRaw(size, size, 4, VTK_UNSIGNED_CHAR, noData);
+    map.Rendered = false;
+  }
+  if (!this->FrameBuffer || this->FrameBuffer->GetContext() != window)
+  {
+    this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->FrameBuffer->SetContext(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::vtkInternals::SetupCamera(
+  int face, const double center[3], const std::vector<vtkProp*>& scene, vtkCamera* mainCamera)
+{
+  // Near and far from the distance to the scene's farthest corner.
+  double farthest = 1.0;
+  for (vtkProp* prop : scene)
+  {
+    const double* b = prop->GetBounds();
+    if (!b || !vtkMath::AreBoundsInitialized(b))
+    {
+      continue;
+    }
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double p[3] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] };
+      farthest = std::max(farthest, std::sqrt(vtkMath::Distance2BetweenPoints(p, center)));
+    }
+  }
+  vtkCamera* camera = this->FaceCamera;
+  const FaceView& view = Faces[face];
+  camera->SetPosition(center[0], center[1], center[2]);
+  camera->SetFocalPoint(
+    center[0] + view.Direction[0], center[1] + view.Direction[1], center[2] + view.Direction[2]);
+  camera->SetViewUp(view.Up[0], view.Up[1], view.Up[2]);
+  camera->SetViewAngle(90.0);
+  camera->SetUseExplicitAspectRatio(true);
+  camera->SetExplicitAspectRatio(1.0);
+  camera->SetClippingRange(1e-4 * farthest, 1.01 * farthest);
+
+  // Camera-following lights keep the direction they have for the main camera: their view-space
+  // direction is mapped by R_face * R_main^T.
+  vtkMatrix4x4* faceView = camera->GetViewTransformMatrix();
+  vtkMatrix4x4* mainView = mainCamera->GetViewTransformMatrix();
+  vtkNew<vtkMatrix4x4> rotation;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      double sum = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        sum += faceView->GetElement(i, k) * mainView->GetElement(j, k);
+      }
+      rotation->SetElement(i, j, sum);
+    }
+  }
+  this->LightTransform->SetMatrix(rotation);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
+  vtkOpenGLRenderer* renderer, CubeMap& map, const std::vector<vtkProp*>& scene,
+  const double center[3])
+{
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  this->Allocate(pass, window, map);
+  const int face = map.NextFace;
+  map.NextFace = (map.NextFace + 1) % 6;
+  --map.PendingFaces;
+
+  std::vector<vtkProp*> visible;
+  for (vtkProp* prop : scene)
+  {
+    const double* b = prop->GetBounds();
+    if (!pass->FrustumCulling || !b || !vtkMath::AreBoundsInitialized(b) ||
+      IntersectsFace(b, center, face))
+    {
+      visible.push_back(prop);
+    }
+  }
+  pass->NumberOfCulledProps += static_cast<vtkIdType>(scene.size() - visible.size());
+
+  vtkSmartPointer<vtkCamera> mainCamera = renderer->GetActiveCamera();
+  this->SetupCamera(face, center, scene, mainCamera);
+  renderer->SetActiveCamera(this->FaceCamera);
+  renderer->SetUserLightTransform(this->LightTransform);
+
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglScissor scissorSaver(state);
+  state->PushFramebufferBindings();
+  this->FrameBuffer->Bind();
+  this->FrameBuffer->AddColorAttachment(
+    0, map.Texture, 0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
+  this->FrameBuffer->AddDepthAttachment();
+  this->FrameBuffer->ActivateBuffer(0);
+  this->FrameBuffer->Start(pass->FaceSize, pass->FaceSize);
+
+  vtkRenderState faceState(renderer);
+  faceState.SetPropArrayAndCount(visible.data(), static_cast<int>(visible.size()));
+  faceState.SetFrameBuffer(this->FrameBuffer);
+  pass->DelegatePass->Render(&faceState);
+  pass->NumberOfRenderedProps += pass->DelegatePass->GetNumberOfRenderedProps();
+
+  this->FrameBuffer->RemoveColorAttachment(0);
+  state->PopFramebufferBindings();
+  renderer->SetUserLightTransform(nullptr);
+  renderer->SetActiveCamera(mainCamera);
+  ++pass->NumberOfFaceRenders;
+  map.Rendered = map.Rendered || map.PendingFaces == 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIceCubeMapPass::vtkIceCubeMapPass()
+  : Internals(new vtkInternals)
+{
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
+  this->SetDelegatePass(steps);
+  steps->Delete();
+}
+
+//------------------------------------------------------------------------------
+vtkIceCubeMapPass::~vtkIceCubeMapPass()
+{
+  this->SetDelegatePass(nullptr);
+  delete this->Internals;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::Update()
+{
+  this->Internals->UpdateRequested = true;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIceCubeMapPass::GetCubeMap(vtkProp* iceProp)
+{
+  auto found = this->Internals->Maps.find(iceProp);
+  return found != this->Internals->Maps.end() && found->second.Rendered
+    ? found->second.Texture.Get()
+    : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "No delegate pass: cube maps are not rendered.");
+    return;
+  }
+  vtkOpenGLRenderer* renderer = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+
+  // Forget cube maps of props that are no longer ice in this renderer.
+  std::vector<vtkProp*> iceProps(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+  for (auto it = this->Internals->Maps.begin(); it != this->Internals->Maps.end();)
+  {
+    const bool current = std::find(iceProps.begin(), iceProps.end(), it->first) != iceProps.end();
+    if (!current && it->second.Texture)
+    {
+      it->second.Texture->ReleaseGraphicsResources(window);
+    }
+    it = current ? std::next(it) : this->Internals->Maps.erase(it);
+  }
+
+  const std::vector<vtkProp*> scene = SceneProps(renderer);
+  const bool updateRequested = this->Internals->UpdateRequested;
+  this->Internals->UpdateRequested = false;
+  for (vtkProp* iceProp : iceProps)
+  {
+    double center[3];
+    const double* bounds = iceProp->GetBounds();
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+    {
+      continue;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      center[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    }
+    const size_t signature = SceneSignature(renderer, scene, center, this->FaceSize);
+    auto inserted = this->Internals->Maps.emplace(iceProp, vtkInternals::CubeMap());
+    vtkInternals::CubeMap& map = inserted.first->second;
+    const bool resized = map.Texture && map.Texture->GetWidth() != static_cast<unsigned int>(this->FaceSize);
+    const bool restart = inserted.second || resized || updateRequested ||
+      (this->UpdateMode == EveryFrame && map.PendingFaces == 0) ||
+      (this->UpdateMode == OnChange && signature != map.Signature);
+    if (restart)
+    {
+      map.PendingFaces = 6;
+      map.Signature = signature;
+    }
+    const int faces = std::min(map.PendingFaces, this->FacesPerFrame);
+    for (int f = 0; f < faces; ++f)
+    {
+      this->Internals->RenderFace(this, renderer, map, scene, center);
+    }
+  }
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::AttachCubeMaps(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    vtkTextureObject* cubeMap = this->GetCubeMap(prop);
+    if (!cubeMap)
+    {
+      continue;
+    }
+    if (!prop->GetPropertyKeys())
+    {
+      vtkNew<vtkInformation> keys;
+      prop->SetPropertyKeys(keys);
+    }
+    prop->GetPropertyKeys()->Set(ENVIRONMENT(), cubeMap);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::DetachCubeMaps(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    if (vtkInformation* keys = s->GetPropArray()[i]->GetPropertyKeys())
+    {
+      keys->Remove(ENVIRONMENT());
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  for (auto& entry : this->Internals->Maps)
+  {
+    if (entry.second.Texture)
+    {
+      entry.second.Texture->ReleaseGraphicsResources(w);
+    }
+  }
+  this->Internals->Maps.clear();
+  if (this->Internals->FrameBuffer)
+  {
+    this->Internals->FrameBuffer->ReleaseGraphicsResources(w);
+    this->Internals->FrameBuffer = nullptr;
+  }
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const char* modes[3] = { "EveryFrame", "OnChange", "Manual" };
+  os << indent << "UpdateMode: " << modes[this->UpdateMode] << "\n";
+  os << indent << "FaceSize: " << this->FaceSize << "\n";
+  os << indent << "FacesPerFrame: " << this->FacesPerFrame << "\n";
+  os << indent << "FrustumCulling: " << (this->FrustumCulling ? "On" : "Off") << "\n";
+  os << indent << "NumberOfFaceRenders: " << this->NumberOfFaceRenders << "\n";
+  os << indent << "NumberOfCulledProps: " << this->NumberOfCulledProps << "\n";
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+}
