@@ -22,13 +22,14 @@ namespace
 {
 const char* const Usage =
   "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|DIR] [--size WxH]\n"
-  "                  [--out FILE] [--one-sided] [--interactive]\n"
-  "Renders a model as ice (default: the teapot in front of a procedural sky) to ice.png.\n"
+  "                  [--out FILE] [--one-sided] [--static] [--interactive]\n"
+  "Renders a model as ice (default: the teapot in a small landscape) to ice.png.\n"
   "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
   "  --env    sky, test, or a folder with cube faces px nx py ny pz nz (.png/.jpg/.bmp/.tif)\n"
   "  --size   image size, default 1024x768\n"
   "  --out    output PNG, default ice.png\n"
   "  --one-sided  refract at the front face only (the default blends in the back face)\n"
+  "  --static     no landscape and no dynamic cube map: the ice sees the environment map only\n"
   "  --interactive  open a window with a trackball camera instead of writing a file\n";
 
 struct Options
@@ -40,6 +41,7 @@ struct Options
   int Height = 768;
   bool Interactive = false;
   bool OneSided = false;
+  bool Static = false;
 };
 
 int Fail(const std::string& message, int code)
@@ -83,6 +85,10 @@ int Parse(int argc, char* argv[], Options& options)
     else if (arg == "--one-sided")
     {
       options.OneSided = true;
+    }
+    else if (arg == "--static")
+    {
+      options.Static = true;
     }
     else if (arg == "--model" || arg == "--env" || arg == "--out" || arg == "--size")
     {
@@ -142,7 +148,10 @@ int main(int argc, char* argv[])
   }
 
   vtkNew<vtkRenderer> renderer;
-  vtkActor* ice = IceScene::Populate(renderer, model, environment);
+  IceScene::Options sceneOptions;
+  sceneOptions.Landscape = !options.Static;
+  sceneOptions.DynamicEnvironment = !options.Static;
+  vtkActor* ice = IceScene::Populate(renderer, model, environment, sceneOptions);
   vtkIceMapper::SafeDownCast(ice->GetMapper())->SetTwoSidedRefraction(!options.OneSided);
   vtkNew<vtkRenderWindow> window;
   window->SetSize(options.Width, options.Height);

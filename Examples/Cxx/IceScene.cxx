@@ -3,25 +3,32 @@
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
+#include "vtkIceCubeMapPass.h"
 #include "vtkIcePass.h"
 #include "vtkIceTeapotSource.h"
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkConeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkImageFlip.h"
 #include "vtkImageReader2.h"
 #include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
+#include "vtkLight.h"
 #include "vtkLogger.h"
 #include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPolyData.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkPolyDataReader.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
 #include "vtkSkybox.h"
@@ -73,6 +80,13 @@ bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error)
   vtkOutputWindow::SetInstance(previous);
   error = capture->FirstMessage;
   return error.empty();
+}
+
+vtkSmartPointer<vtkPolyDataMapper> MakeMapper(vtkAlgorithm* source)
+{
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(source->GetOutputPort());
+  return mapper;
 }
 
 std::string Extension(const std::string& path)
@@ -145,6 +159,108 @@ vtkSmartPointer<vtkPolyData> Normalize(vtkPolyData* model)
   apply->SetTransform(transform);
   apply->Update();
   return apply->GetOutput();
+}
+}
+
+namespace
+{
+void AddLandscape(vtkRenderer* renderer, double groundHeight)
+{
+  // Checkered snow and grass, half a unit per square, mip-mapped for the distance.
+  const double halfSize = 12.0;
+  const int texels = 1024;
+  const int squares = 48;
+  vtkNew<vtkImageData> checker;
+  checker->SetDimensions(texels, texels, 1);
+  checker->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  for (int j = 0; j < texels; ++j)
+  {
+    for (int i = 0; i < texels; ++i)
+    {
+      const bool snow = ((i * squares / texels) + (j * squares / texels)) % 2 == 0;
+      const unsigned char rgb[3] = { static_cast<unsigned char>(snow ? 225 : 80),
+        static_cast<unsigned char>(snow ? 230 : 120), static_cast<unsigned char>(snow ? 235 : 75) };
+      for (int c = 0; c < 3; ++c)
+      {
+        checker->SetScalarComponentFromDouble(i, j, 0, c, rgb[c]);
+      }
+    }
+  }
+  vtkNew<vtkTexture> groundTexture;
+  groundTexture->SetInputData(checker);
+  groundTexture->InterpolateOn();
+  groundTexture->MipmapOn();
+  vtkNew<vtkPlaneSource> groundPlane;
+  groundPlane->SetOrigin(-halfSize, groundHeight, halfSize);
+  groundPlane->SetPoint1(halfSize, groundHeight, halfSize);
+  groundPlane->SetPoint2(-halfSize, groundHeight, -halfSize);
+  vtkNew<vtkActor> ground;
+  ground->SetMapper(MakeMapper(groundPlane));
+  ground->SetTexture(groundTexture);
+  ground->GetProperty()->SetAmbient(0.4);
+  renderer->AddActor(ground);
+
+  // Rocks: ice-block shapes, rounder and rougher, in stone colours.
+  const double rocks[][5] = { // x, z, size, seed, shade
+    { -3.5, -2.0, 1.4, 3, 0.55 }, { 3.8, -3.5, 2.2, 5, 0.45 }, { -1.5, 4.5, 1.0, 8, 0.6 },
+    { 5.0, 2.5, 1.2, 11, 0.5 }, { -6.0, 3.0, 2.0, 13, 0.4 } };
+  for (const auto& rock : rocks)
+  {
+    vtkNew<vtkIceBlockSource> shape;
+    shape->SetSeed(static_cast<int>(rock[3]));
+    shape->SetSize(rock[2]);
+    shape->SetRoundness(0.6);
+    shape->SetDisplacement(0.25);
+    shape->SetResolution(10);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(MakeMapper(shape));
+    actor->SetPosition(rock[0], groundHeight + 0.3 * rock[2], rock[1]);
+    actor->GetProperty()->SetColor(rock[4] + 0.05, rock[4], rock[4] - 0.05);
+    actor->GetProperty()->SetAmbient(0.35);
+    renderer->AddActor(actor);
+  }
+
+  // Pine trees: a trunk and a cone.
+  const double trees[][3] = { // x, z, height
+    { -2.0, -5.5, 3.0 }, { 1.0, -7.0, 3.6 }, { 6.5, -1.0, 2.6 }, { -5.0, -0.5, 2.8 }, { 2.5, 5.5, 3.2 },
+    { -4.0, 6.5, 3.4 } };
+  for (const auto& tree : trees)
+  {
+    vtkNew<vtkCylinderSource> trunkShape;
+    trunkShape->SetRadius(0.12 * tree[2] / 3.0);
+    trunkShape->SetHeight(0.3 * tree[2]);
+    trunkShape->SetResolution(12);
+    vtkNew<vtkActor> trunk;
+    trunk->SetMapper(MakeMapper(trunkShape));
+    trunk->SetPosition(tree[0], groundHeight + 0.15 * tree[2], tree[1]);
+    trunk->GetProperty()->SetColor(0.4, 0.27, 0.15);
+    trunk->GetProperty()->SetAmbient(0.35);
+    renderer->AddActor(trunk);
+
+    vtkNew<vtkConeSource> crownShape;
+    crownShape->SetRadius(0.35 * tree[2]);
+    crownShape->SetHeight(0.8 * tree[2]);
+    crownShape->SetDirection(0.0, 1.0, 0.0);
+    crownShape->SetResolution(24);
+    vtkNew<vtkActor> crown;
+    crown->SetMapper(MakeMapper(crownShape));
+    crown->SetPosition(tree[0], groundHeight + 0.6 * tree[2], tree[1]);
+    crown->GetProperty()->SetColor(0.12, 0.38, 0.18);
+    crown->GetProperty()->SetAmbient(0.35);
+    renderer->AddActor(crown);
+  }
+
+  // The sky's sun, plus a soft fill from the camera side.
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPosition(45.0, 55.0, -70.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  sun->SetIntensity(0.9);
+  renderer->AddLight(sun);
+  vtkNew<vtkLight> fill;
+  fill->SetLightTypeToHeadlight();
+  fill->SetIntensity(0.35);
+  renderer->AddLight(fill);
 }
 }
 
@@ -264,10 +380,20 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
   return texture;
 }
 
-vtkActor* Populate(vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment)
+vtkActor* Populate(
+  vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment, const Options& options)
 {
   vtkNew<vtkIcePass> icePass;
   renderer->SetPass(icePass);
+  if (options.DynamicEnvironment)
+  {
+    vtkNew<vtkIceCubeMapPass> cubeMapPass;
+    icePass->SetCubeMapPass(cubeMapPass);
+  }
+  if (options.Landscape)
+  {
+    AddLandscape(renderer, model->GetBounds()[2]);
+  }
   renderer->SetEnvironmentTexture(environment);
   vtkNew<vtkSkybox> skybox;
   skybox->SetTexture(environment);

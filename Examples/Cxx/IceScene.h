@@ -23,10 +23,20 @@ vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& er
 // Returns nullptr and sets `error` on failure.
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error);
 
-// Sets a vtkIcePass on the renderer (two-sided refraction), adds the skybox, the environment and
-// an ice actor for `model`, and frames the camera.
+struct Options
+{
+  // A ground with rocks and trees around the ice, lit by the sky's sun.
+  bool Landscape = true;
+  // The ice reflects and refracts a cube map of the scene around it (vtkIceCubeMapPass) instead
+  // of the environment texture alone.
+  bool DynamicEnvironment = true;
+};
+
+// Sets a vtkIcePass on the renderer (two-sided refraction), adds the skybox, the environment, the
+// landscape if asked and an ice actor for `model`, and frames the camera.
 // Returns the ice actor (its mapper is a vtkIceMapper).
-vtkActor* Populate(vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment);
+vtkActor* Populate(
+  vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment, const Options& options = {});
 }
 
 #endif

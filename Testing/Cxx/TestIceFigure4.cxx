@@ -35,7 +35,11 @@ int TestIceFigure4(int argc, char* argv[])
   for (int side = 0; side < 2; ++side)
   {
     renderers[side]->SetViewport(0.5 * side, 0.0, 0.5 * (side + 1), 1.0);
-    ice[side] = IceScene::Populate(renderers[side], teapot, environment);
+    // The paper's Figure 4: the ice in its environment map alone.
+    IceScene::Options options;
+    options.Landscape = false;
+    options.DynamicEnvironment = false;
+    ice[side] = IceScene::Populate(renderers[side], teapot, environment, options);
     vtkIceMapper::SafeDownCast(ice[side]->GetMapper())->SetTwoSidedRefraction(side == 0);
     window->AddRenderer(renderers[side]);
   }

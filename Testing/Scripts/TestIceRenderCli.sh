@@ -40,7 +40,7 @@ s = vtk.vtkSphereSource()
 w = vtk.vtkSTLWriter(); w.SetInputConnection(s.GetOutputPort()); w.SetFileName("ball.stl"); w.Write()
 w = vtk.vtkXMLPolyDataWriter(); w.SetInputConnection(s.GetOutputPort()); w.SetFileName("ball.vtp"); w.Write()
 PY
-expect_ok "STL file" --model ball.stl --size 64x48 --out stl.png
+expect_ok "STL file, static environment" --model ball.stl --static --size 64x48 --out stl.png
 expect_ok "VTP file" --model ball.vtp --size 64x48 --out vtp.png
 mkdir -p faces && for f in px nx py ny pz nz; do cp sphere.png faces/$f.png; done
 expect_error "non-square faces" "square" --env faces --size 64x48 --out x.png
