@@ -1,0 +1,17 @@
+// Seeded noise shared by the procedural sources: the same seed gives the same numbers on every
+// platform (integer hashing, unlike std:: distributions, is not implementation defined).
+#ifndef vtkIceNoise_h
+#define vtkIceNoise_h
+
+#include <cstdint>
+
+namespace vtkIceNoise
+{
+// A few octaves of gradient noise at `p`, about [-1, 1], smooth in p.
+double FractalNoise(const double p[3], std::uint32_t seed);
+
+// A uniform number in [0, 1), the `index`-th of the sequence of `seed`.
+double Uniform(std::uint32_t seed, std::uint32_t index);
+}
+
+#endif
