@@ -1,7 +1,10 @@
 #include "vtkIceBackfaceNormalPass.h"
 
 #include "vtkIceBackfaceNormalFS.h"
+#include "vtkIceMapper.h"
 #include "vtkIceShaderSections.h"
+
+#include "vtkActor.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -101,6 +104,15 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   {
     this->NumberOfRenderedProps += s->GetPropArray()[i]->RenderOpaqueGeometry(renderer);
   }
+  // Cracks that perturb the refraction stand in for the back face where they are nearer.
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(prop))
+    {
+      mapper->RenderCracks(renderer, static_cast<vtkActor*>(prop), false);
+    }
+  }
   this->PostRender(s);
 
   this->FrameBuffer->RemoveColorAttachments(1);
@@ -115,6 +127,8 @@ bool vtkIceBackfaceNormalPass::PostReplaceShaderValues(std::string&, std::string
 {
   vtkShaderProgram::Substitute(fragmentShader, "//ICEHOOK::Output",
     vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Impl"));
+  vtkShaderProgram::Substitute(fragmentShader, "//ICEHOOK::CrackOutput",
+    vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Crack"));
   return true;
 }
 

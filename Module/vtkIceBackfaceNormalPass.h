@@ -7,6 +7,8 @@
  * ice props) with front faces culled and writes their world-space normals, normalised per
  * fragment, into an RGBA32F texture the size of the viewport. Alpha is 1 where ice was drawn and
  * 0 elsewhere. The texture follows the viewport's size and is freed by ReleaseGraphicsResources.
+ * Cracks of ice mappers with CracksPerturbRefraction on are drawn into it too, where they lie in
+ * front of the back face.
  */
 #ifndef vtkIceBackfaceNormalPass_h
 #define vtkIceBackfaceNormalPass_h

@@ -1,7 +1,11 @@
 #include "vtkIceMapper.h"
 
+#include "vtkIceCrackMapper.h"
+#include "vtkIceCrackSource.h"
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceDebugDepthFS.h"
+#include "vtkIceNoise.h"
 #include "vtkIceOptics.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceSurfaceFS.h"
@@ -9,53 +13,145 @@
 #include "vtkIceTwoSidedFS.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkCellArray.h"
-#include "vtkDataArray.h"
+#include "vtkAppendPolyData.h"
+#include "vtkClipPolyData.h"
+#include "vtkImplicitPolyDataDistance.h"
 #include "vtkInformation.h"
-#include "vtkOpenGLTexture.h"
 #include "vtkMath.h"
-#include "vtkMatrix3x3.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLActor.h"
-#include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexBufferObject.h"
-#include "vtkOpenGLVertexBufferObjectGroup.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
+#include "vtkOpenGLTexture.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtk_glew.h"
 
-#include <cmath>
+#include <algorithm>
+#include <cstdint>
 
 vtkStandardNewMacro(vtkIceMapper);
 
 namespace
 {
-const char* const IceNormalArray = "vtkIceNormals";
-
-bool HasOnlyFinitePoints(vtkPoints* points)
+enum ShaderParts
 {
-  vtkDataArray* data = points->GetData();
-  const vtkIdType n = data->GetNumberOfValues();
-  for (vtkIdType i = 0; i < n; ++i)
+  TwoSidedPart = 1,
+  DepthDebugPart = 2
+};
+const int GenericCrackModels = 3;
+}
+
+// The crack surfaces of one ice mapper: their geometry (cached) and what draws it.
+class vtkIceMapper::vtkCracks
+{
+public:
+  vtkNew<vtkIceCrackMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkSmartPointer<vtkPolyData> Geometry;
+
+  vtkCracks()
   {
-    if (!std::isfinite(data->GetComponent(i / 3, static_cast<int>(i % 3))))
-    {
-      return false;
-    }
+    vtkProperty* property = this->Actor->GetProperty();
+    property->SetAmbient(0.0);
+    property->SetDiffuse(0.0);
+    property->SetSpecular(1.0);
+    property->SetSpecularPower(40.0);
+    property->SetSpecularColor(1.0, 1.0, 1.0);
+    this->Actor->SetMapper(this->Mapper);
   }
-  return true;
-}
-}
+
+  vtkPolyData* Update(vtkPolyData* ice, int number, int seed, int clipping)
+  {
+    const bool current = this->Geometry && ice == this->Ice && ice->GetMTime() == this->IceTime &&
+      number == this->Number && seed == this->Seed && clipping == this->Clipping;
+    if (!current)
+    {
+      this->Ice = ice;
+      this->IceTime = ice->GetMTime();
+      this->Number = number;
+      this->Seed = seed;
+      this->Clipping = clipping;
+      this->Geometry = Build(ice, number, seed, clipping);
+      this->Mapper->SetInputData(this->Geometry);
+    }
+    return this->Geometry;
+  }
+
+private:
+  vtkPolyData* Ice = nullptr;
+  vtkMTimeType IceTime = 0;
+  int Number = -1;
+  int Seed = 0;
+  int Clipping = -1;
+
+  static vtkSmartPointer<vtkPolyData> Build(vtkPolyData* ice, int number, int seed, int clipping)
+  {
+    double bounds[6];
+    ice->GetBounds(bounds);
+    const double size[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+    const double extent = std::max({ size[0], size[1], size[2] });
+
+    vtkSmartPointer<vtkPolyData> models[GenericCrackModels];
+    for (int m = 0; m < GenericCrackModels; ++m)
+    {
+      vtkNew<vtkIceCrackSource> source;
+      source->SetSeed(GenericCrackModels * seed + m);
+      source->Update();
+      models[m] = source->GetOutput();
+    }
+
+    vtkNew<vtkAppendPolyData> append;
+    const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 7919U + 1U;
+    for (int i = 0; i < number; ++i)
+    {
+      double u[7];
+      for (int k = 0; k < 7; ++k)
+      {
+        u[k] = vtkIceNoise::Uniform(sequence, static_cast<std::uint32_t>(7 * i + k));
+      }
+      // A random orientation (axis uniform on the sphere), a position near the centre and a
+      // size that spans most of the ice.
+      const double z = 2.0 * u[0] - 1.0;
+      const double phi = 2.0 * vtkMath::Pi() * u[1];
+      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      vtkNew<vtkTransform> transform;
+      transform->Translate(0.5 * (bounds[0] + bounds[1]) + 0.3 * (u[3] - 0.5) * size[0],
+        0.5 * (bounds[2] + bounds[3]) + 0.3 * (u[4] - 0.5) * size[1],
+        0.5 * (bounds[4] + bounds[5]) + 0.3 * (u[5] - 0.5) * size[2]);
+      transform->RotateWXYZ(360.0 * u[2], r * std::cos(phi), r * std::sin(phi), z);
+      const double scale = 0.6 * extent * (0.8 + 0.4 * u[6]);
+      transform->Scale(scale, scale, scale);
+      vtkNew<vtkTransformPolyDataFilter> place;
+      place->SetInputData(models[i % GenericCrackModels]);
+      place->SetTransform(transform);
+      append->AddInputConnection(place->GetOutputPort());
+    }
+    if (number == 0)
+    {
+      return vtkSmartPointer<vtkPolyData>::New();
+    }
+    append->Update();
+    if (clipping != vtkIceMapper::Geometry)
+    {
+      return append->GetOutput();
+    }
+    vtkNew<vtkImplicitPolyDataDistance> distance;
+    distance->SetInput(ice);
+    vtkNew<vtkClipPolyData> clip;
+    clip->SetInputConnection(append->GetOutputPort());
+    clip->SetClipFunction(distance);
+    clip->InsideOutOn(); // keep negative distances: inside the ice
+    clip->SetValue(0.0);
+    clip->Update();
+    return clip->GetOutput();
+  }
+};
 
 //------------------------------------------------------------------------------
 vtkIceMapper::vtkIceMapper()
@@ -63,95 +159,73 @@ vtkIceMapper::vtkIceMapper()
   , FresnelPower(3.0)
   , BackNormalWeight(0.33)
   , IceColor{ 1.0, 1.0, 1.0 }
+  , Cracks(new vtkCracks)
 {
-  this->MapDataArrayToVertexAttribute(
-    "iceNormalMC", IceNormalArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
 //------------------------------------------------------------------------------
-vtkIceMapper::~vtkIceMapper() = default;
-
-//------------------------------------------------------------------------------
-bool vtkIceMapper::PrepareInput(vtkPolyData* input)
+vtkIceMapper::~vtkIceMapper()
 {
-  if (input == this->PreparedSource && input->GetMTime() == this->PreparedInputTime)
-  {
-    return this->PreparedValid;
-  }
-  this->PreparedSource = input;
-  this->PreparedInputTime = input->GetMTime();
-  this->PreparedValid = false;
-  this->PreparedInput = nullptr;
-
-  const vtkIdType surfaces = input->GetNumberOfPolys() + input->GetNumberOfStrips();
-  if (input->GetNumberOfPoints() == 0 || surfaces == 0)
-  {
-    vtkErrorMacro(<< "Input has no polygons to render as ice (" << input->GetNumberOfPoints()
-                  << " points, " << input->GetNumberOfLines() << " lines, "
-                  << input->GetNumberOfVerts() << " vertices); it is not drawn.");
-    return false;
-  }
-  if (!HasOnlyFinitePoints(input->GetPoints()))
-  {
-    vtkErrorMacro(<< "Input has NaN or infinite point coordinates; it is not drawn as ice.");
-    return false;
-  }
-
-  vtkDataArray* normals = input->GetPointData()->GetNormals();
-  vtkSmartPointer<vtkDataArray> iceNormals;
-  this->PreparedInput = vtkSmartPointer<vtkPolyData>::New();
-  if (normals && normals->GetNumberOfComponents() == 3)
-  {
-    this->PreparedInput->ShallowCopy(input);
-    iceNormals.TakeReference(normals->NewInstance());
-    iceNormals->ShallowCopy(normals);
-  }
-  else
-  {
-    vtkNew<vtkPolyDataNormals> computeNormals;
-    computeNormals->SetInputData(input);
-    computeNormals->SplittingOff();
-    computeNormals->ConsistencyOn();
-    computeNormals->ComputeCellNormalsOff();
-    computeNormals->Update();
-    this->PreparedInput->ShallowCopy(computeNormals->GetOutput());
-    iceNormals = this->PreparedInput->GetPointData()->GetNormals();
-  }
-  iceNormals->SetName(IceNormalArray);
-  this->PreparedInput->GetPointData()->AddArray(iceNormals);
-  this->PreparedValid = true;
-  return true;
+  delete this->Cracks;
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
+vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
 {
-  vtkPolyData* input = this->GetInput();
-  if (!input)
-  {
-    vtkErrorMacro(<< "No input.");
-    return;
-  }
-  if (!this->Static && this->GetInputAlgorithm())
-  {
-    this->GetInputAlgorithm()->Update();
-  }
-  if (!this->PrepareInput(input))
-  {
-    return;
-  }
-  this->Superclass::RenderPiece(ren, act);
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return actor && actor->GetVisibility() ? vtkIceMapper::SafeDownCast(actor->GetMapper()) : nullptr;
 }
 
 //------------------------------------------------------------------------------
-double* vtkIceMapper::GetBounds()
+void vtkIceMapper::SetBackfaceNormalTexture(vtkTextureObject* texture)
 {
-  double* bounds = this->Superclass::GetBounds();
-  if (vtkPolyData* input = this->GetInput())
+  // Per-frame textures are uniforms, not pipeline changes: no Modified().
+  this->BackfaceNormalTexture = texture;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIceMapper::GetBackfaceNormalTexture()
+{
+  return this->BackfaceNormalTexture;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetDepthIntervalTexture(vtkTextureObject* texture)
+{
+  this->DepthIntervalTexture = texture;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIceMapper::GetDepthIntervalTexture()
+{
+  return this->DepthIntervalTexture;
+}
+
+//------------------------------------------------------------------------------
+int vtkIceMapper::ShaderVariant() const
+{
+  int variant = 0;
+  if (this->TwoSidedRefraction && this->BackfaceNormalTexture)
   {
-    this->PrepareInput(input);
+    variant |= TwoSidedPart;
   }
-  return bounds;
+  if ((this->DebugView == DebugFrontDepth || this->DebugView == DebugBackDepth) &&
+    this->DepthIntervalTexture)
+  {
+    variant |= DepthDebugPart;
+  }
+  return variant;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  // The superclass must always run: it also updates the light complexity.
+  const bool superclassNeeds = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  auto built = this->ShaderVariantBuilt.find(&cellBO);
+  const bool variantChanged =
+    built != this->ShaderVariantBuilt.end() && built->second != this->ShaderVariant();
+  return superclassNeeds || variantChanged;
 }
 
 //------------------------------------------------------------------------------
@@ -181,13 +255,6 @@ vtkTexture* vtkIceMapper::SelectEnvironment(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
-vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
-{
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return actor && actor->GetVisibility() ? vtkIceMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-}
-
-//------------------------------------------------------------------------------
 vtkTextureObject* vtkIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
 {
   vtkInformation* keys = act->GetPropertyKeys();
@@ -206,8 +273,6 @@ vtkTextureObject* vtkIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
 //------------------------------------------------------------------------------
 void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
-  // Draw the prepared copy (input plus ice normals) instead of the raw input.
-  this->CurrentInput = this->PreparedInput;
   this->ActiveEnvironmentObject = this->BindEnvironment(ren, act);
   this->Superclass::RenderPieceStart(ren, act);
 }
@@ -216,10 +281,6 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
-  if (this->BackfaceNormalTexture)
-  {
-    this->BackfaceNormalTexture->Deactivate();
-  }
   if (this->ActiveEnvironment)
   {
     this->ActiveEnvironment->PostRender(ren);
@@ -233,135 +294,162 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetBackfaceNormalTexture(vtkTextureObject* texture)
+void vtkIceMapper::ReplaceIceShaderValues(
+  std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
 {
-  // Not Modified(): the texture changes every frame and is a uniform, not a pipeline change.
-  this->BackfaceNormalTexture = texture;
-}
+  using vtkIceShaderSections::AfterTag;
+  using vtkIceShaderSections::Get;
+  const std::string optics = vtkIceOptics;
+  const int variant = this->ShaderVariant();
+  this->ShaderVariantBuilt[this->LastBoundBO] = variant;
 
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkIceMapper::GetBackfaceNormalTexture()
-{
-  return this->BackfaceNormalTexture;
-}
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", optics + Get(vtkIceSurfaceVS, "Dec")));
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceSurfaceVS, "Impl")));
 
-//------------------------------------------------------------------------------
-bool vtkIceMapper::UseTwoSidedShader() const
-{
-  return this->TwoSidedRefraction && this->BackfaceNormalTexture != nullptr;
-}
-
-//------------------------------------------------------------------------------
-bool vtkIceMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  // The superclass must always run: it also updates the light complexity.
-  const bool superclassNeeds = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
-  auto built = this->TwoSidedShaderBuilt.find(&cellBO);
-  const bool variantChanged =
-    built != this->TwoSidedShaderBuilt.end() && built->second != this->UseTwoSidedShader();
-  return superclassNeeds || variantChanged;
-}
-
-//------------------------------------------------------------------------------
-bool vtkIceMapper::IsSurfaceHelper(const vtkOpenGLHelper* helper) const
-{
-  return helper == &this->Primitives[PrimitiveTris] ||
-    helper == &this->Primitives[PrimitiveTriStrips];
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::ReplaceShaderValues(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  if (this->IsSurfaceHelper(this->LastBoundBO))
+  std::string declarations = optics + Get(vtkIceSurfaceFS, "Dec");
+  if (variant & TwoSidedPart)
   {
-    const std::string optics = vtkIceOptics;
-    const std::string vs = vtkIceSurfaceVS;
-    const std::string fs = vtkIceSurfaceFS;
-    const bool twoSided = this->UseTwoSidedShader();
-    this->TwoSidedShaderBuilt[this->LastBoundBO] = twoSided;
-    std::string vsSource = shaders[vtkShader::Vertex]->GetSource();
-    std::string fsSource = shaders[vtkShader::Fragment]->GetSource();
-    vtkShaderProgram::Substitute(vsSource, "//VTK::Normal::Dec",
-      vtkIceShaderSections::AfterTag(
-        "//VTK::Normal::Dec", optics + vtkIceShaderSections::Get(vs, "Dec")));
-    vtkShaderProgram::Substitute(vsSource, "//VTK::Light::Impl",
-      vtkIceShaderSections::AfterTag("//VTK::Light::Impl", vtkIceShaderSections::Get(vs, "Impl")));
-    vtkShaderProgram::Substitute(fsSource, "//VTK::Normal::Dec",
-      vtkIceShaderSections::AfterTag(
-        "//VTK::Normal::Dec", optics + vtkIceShaderSections::Get(fs, "Dec")));
-    vtkShaderProgram::Substitute(fsSource, "//VTK::Light::Impl",
-      vtkIceShaderSections::AfterTag("//VTK::Light::Impl", vtkIceShaderSections::Get(fs, "Impl")));
-    if (twoSided)
-    {
-      const std::string twoSidedCode = vtkIceTwoSidedFS;
-      vtkShaderProgram::Substitute(fsSource, "//VTK::Normal::Dec",
-        vtkIceShaderSections::AfterTag(
-          "//VTK::Normal::Dec", vtkIceShaderSections::Get(twoSidedCode, "Dec")));
-      vtkShaderProgram::Substitute(fsSource, "//ICEHOOK::RefractionNormal",
-        vtkIceShaderSections::Get(twoSidedCode, "Impl"));
-    }
-    shaders[vtkShader::Vertex]->SetSource(vsSource);
-    shaders[vtkShader::Fragment]->SetSource(fsSource);
+    declarations += Get(vtkIceTwoSidedFS, "Dec");
   }
-  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  if (variant & DepthDebugPart)
+  {
+    declarations += Get(vtkIceDebugDepthFS, "Dec");
+  }
+  vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", declarations));
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceSurfaceFS, "Impl")));
+  if (variant & TwoSidedPart)
+  {
+    vtkShaderProgram::Substitute(fs, "//ICEHOOK::RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
+  }
+  if (variant & DepthDebugPart)
+  {
+    vtkShaderProgram::Substitute(fs, "//ICEHOOK::Debug", Get(vtkIceDebugDepthFS, "Impl"));
+  }
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetMapperShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+void vtkIceMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor*)
 {
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
-  vtkShaderProgram* program = cellBO.Program;
-  if (!program || !this->IsSurfaceHelper(&cellBO) || !this->ActiveEnvironmentObject)
+  if (!this->ActiveEnvironmentObject)
   {
     return;
   }
-
-  // Model to world, including the inverse of the VBO's coordinate shift and scale. Matrices are
-  // kept transposed, as VTK uploads them.
-  vtkNew<vtkMatrix4x4> mcwc;
-  vtkNew<vtkMatrix3x3> normalMCWC;
-  vtkOpenGLVertexBufferObject* vertices = this->VBOs->GetVBO("vertexMC");
-  if (vertices && vertices->GetCoordShiftAndScaleEnabled())
-  {
-    mcwc->DeepCopy(this->VBOShiftScale);
-  }
-  if (!act->GetIsIdentity())
-  {
-    vtkMatrix4x4* actorMCWC;
-    vtkMatrix3x3* actorNormals;
-    static_cast<vtkOpenGLActor*>(act)->GetKeyMatrices(actorMCWC, actorNormals);
-    vtkMatrix4x4::Multiply4x4(mcwc, actorMCWC, mcwc);
-    normalMCWC->DeepCopy(actorNormals);
-  }
-  program->SetUniformMatrix("iceMCWCMatrix", mcwc);
-  program->SetUniformMatrix("iceNormalMCWCMatrix", normalMCWC);
-
-  double* eye = ren->GetActiveCamera()->GetPosition();
-  const float cameraWC[3] = { static_cast<float>(eye[0]), static_cast<float>(eye[1]),
-    static_cast<float>(eye[2]) };
   const float tint[3] = { static_cast<float>(this->IceColor[0]),
     static_cast<float>(this->IceColor[1]), static_cast<float>(this->IceColor[2]) };
-  program->SetUniform3f("iceCameraWC", cameraWC);
   program->SetUniform3f("iceTint", tint);
   program->SetUniformf("iceRefractionRatio", static_cast<float>(this->RefractionRatio));
   program->SetUniformf("iceFresnelPower", static_cast<float>(this->FresnelPower));
   program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());
 
-  if (this->UseTwoSidedShader() && program->IsUniformUsed("iceBackNormals"))
+  const int variant = this->ShaderVariant();
+  if (variant & TwoSidedPart)
   {
-    // The back-normal texture covers the renderer's viewport, which starts at the current GL
-    // viewport's origin in whatever framebuffer this draw goes to.
-    int viewport[4];
-    static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())
-      ->GetState()
-      ->vtkglGetIntegerv(GL_VIEWPORT, viewport);
-    this->BackfaceNormalTexture->Activate();
-    program->SetUniformi("iceBackNormals", this->BackfaceNormalTexture->GetTextureUnit());
-    program->SetUniform2i("iceViewportOrigin", viewport);
+    this->BindScreenTexture(program, ren, this->BackfaceNormalTexture, "iceBackNormals");
     program->SetUniformf("iceBackNormalWeight", static_cast<float>(this->BackNormalWeight));
   }
+  if (variant & DepthDebugPart)
+  {
+    this->BindScreenTexture(program, ren, this->DepthIntervalTexture, "iceDepthInterval");
+    const float range[2] = { static_cast<float>(this->DepthRange[0]),
+      static_cast<float>(this->DepthRange[1]) };
+    program->SetUniform2f("iceDepthRange", range);
+    program->SetUniformi("iceDebugChannel", this->DebugView == DebugFrontDepth ? 0 : 1);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkIceMapper::GetCrackGeometry()
+{
+  vtkPolyData* input = this->GetInput();
+  if (!input)
+  {
+    return nullptr;
+  }
+  if (!this->Static && this->GetInputAlgorithm())
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  if (!this->PrepareInput(input))
+  {
+    return nullptr;
+  }
+  return this->Cracks->Update(
+    this->PreparedInput, this->NumberOfCracks, this->CrackSeed, this->CrackClipping);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
+{
+  const bool debugCracks =
+    this->DebugView == DebugCracksUnclipped || this->DebugView == DebugCracksClipped;
+  const bool debugDepth = this->DebugView == DebugFrontDepth || this->DebugView == DebugBackDepth;
+  if (debugDepth || (!overlay && (!this->CracksPerturbRefraction || debugCracks)))
+  {
+    return;
+  }
+  vtkPolyData* geometry = this->GetCrackGeometry();
+  if (!geometry || geometry->GetNumberOfPolys() == 0 || !this->DepthIntervalTexture)
+  {
+    return;
+  }
+  double bounds[6];
+  this->PreparedInput->GetBounds(bounds);
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+
+  vtkIceCrackMapper* mapper = this->Cracks->Mapper;
+  const bool unclipped = this->DebugView == DebugCracksUnclipped;
+  mapper->SetDepthIntervalTexture(this->DepthIntervalTexture);
+  mapper->SetClipToInterval(this->CrackClipping == DepthInterval && !unclipped);
+  mapper->SetDebugColor(debugCracks);
+  mapper->SetIntensity(this->CrackIntensity);
+  mapper->SetBumpFrequency(8.0 / std::max(extent, 1e-12));
+  vtkActor* crackActor = this->Cracks->Actor;
+  crackActor->SetUserMatrix(actor->GetMatrix());
+  // Share the ice actor's keys: render passes that hook the ice hook its cracks too.
+  crackActor->SetPropertyKeys(actor->GetPropertyKeys());
+
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  state->vtkglDisable(GL_CULL_FACE);
+  if (overlay)
+  {
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+    if (debugCracks)
+    {
+      state->vtkglDisable(GL_BLEND);
+    }
+    else
+    {
+      // Highlights add light over the ice.
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+    }
+    if (unclipped)
+    {
+      state->vtkglDisable(GL_DEPTH_TEST);
+    }
+    else
+    {
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDepthFunc(GL_LEQUAL);
+    }
+    state->vtkglDepthMask(GL_FALSE);
+    mapper->Render(ren, crackActor);
+  }
+  else
+  {
+    mapper->Render(ren, crackActor);
+  }
+  crackActor->SetPropertyKeys(nullptr);
+  ++this->NumberOfCrackDraws;
 }
 
 //------------------------------------------------------------------------------
@@ -371,6 +459,7 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
   {
     this->FallbackEnvironment->ReleaseGraphicsResources(win);
   }
+  this->Cracks->Mapper->ReleaseGraphicsResources(win);
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
@@ -384,4 +473,12 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TwoSidedRefraction: " << (this->TwoSidedRefraction ? "On" : "Off") << "\n";
   os << indent << "IceColor: (" << this->IceColor[0] << ", " << this->IceColor[1] << ", "
      << this->IceColor[2] << ")\n";
+  os << indent << "NumberOfCracks: " << this->NumberOfCracks << "\n";
+  os << indent << "CrackSeed: " << this->CrackSeed << "\n";
+  os << indent << "CrackIntensity: " << this->CrackIntensity << "\n";
+  os << indent << "CrackClipping: "
+     << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval") << "\n";
+  os << indent << "CracksPerturbRefraction: " << (this->CracksPerturbRefraction ? "On" : "Off")
+     << "\n";
+  os << indent << "DebugView: " << this->DebugView << "\n";
 }

@@ -7,14 +7,17 @@
  * environment cube map, and the two colours are mixed by a per-vertex Fresnel term (eq 4).
  *
  * The environment is the prop's dynamic cube map when a vtkIceCubeMapPass renders one, otherwise
- * the renderer's environment texture (vtkRenderer::SetEnvironmentTexture with a
- * vtkTexture that has CubeMapOn), looked up with the same world directions vtkSkybox uses, so ice
- * with RefractionRatio 1 disappears against a skybox of the same cube map. Without such a texture
- * the mapper warns once and uses a small built-in sky.
+ * the renderer's environment texture (vtkRenderer::SetEnvironmentTexture with a vtkTexture that
+ * has CubeMapOn), looked up with the same world directions vtkSkybox uses, so ice with
+ * RefractionRatio 1 disappears against a skybox of the same cube map. Without such a texture the
+ * mapper warns once and uses a small built-in sky.
  *
  * With vtkIcePass set on the renderer, refraction is two-sided (paper eq 1): the refraction
  * normal blends the front normal with the back-face normal found behind each pixel, weighted by
  * BackNormalWeight. Without the pass, or with TwoSidedRefraction off, refraction is one-sided.
+ * vtkIcePass also draws the ice's cracks (NumberOfCracks generic crack surfaces placed at random
+ * inside, showing only their specular highlights), clipped to the ice either per fragment by its
+ * depth interval or once on the CPU (CrackClipping).
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn.
@@ -23,21 +26,21 @@
 #define vtkIceMapper_h
 
 #include "RenderingIceModule.h" // for export macro
-#include "vtkOpenGLPolyDataMapper.h"
-#include "vtkSmartPointer.h" // for members
+#include "vtkIceWorldSpaceMapper.h"
 
 #include <map> // for members
 
-class vtkPolyData;
+class vtkActor;
+class vtkIceCrackMapper;
 class vtkProp;
 class vtkTexture;
 class vtkTextureObject;
 
-class RENDERINGICE_EXPORT vtkIceMapper : public vtkOpenGLPolyDataMapper
+class RENDERINGICE_EXPORT vtkIceMapper : public vtkIceWorldSpaceMapper
 {
 public:
   static vtkIceMapper* New();
-  vtkTypeMacro(vtkIceMapper, vtkOpenGLPolyDataMapper);
+  vtkTypeMacro(vtkIceMapper, vtkIceWorldSpaceMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -79,19 +82,111 @@ public:
 
   ///@{
   /**
-   * The back-face normal texture of the current frame (RGB world normal, alpha coverage, at
-   * viewport size). vtkIcePass sets it before rendering the scene and clears it afterwards.
-   */
-  void SetBackfaceNormalTexture(vtkTextureObject* texture);
-  vtkTextureObject* GetBackfaceNormalTexture();
-  ///@}
-
-  ///@{
-  /**
    * Tint multiplied into the ice colour, each component in [0, 1]. Default white.
    */
   vtkSetVector3Macro(IceColor, double);
   vtkGetVector3Macro(IceColor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Number of crack surfaces inside the ice (drawn by vtkIcePass). Default 2; clamped to
+   * [0, 1000]. They cost one draw whatever their number.
+   */
+  vtkSetClampMacro(NumberOfCracks, int, 0, 1000);
+  vtkGetMacro(NumberOfCracks, int);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the cracks' models, rotations and positions: the same seed gives the same cracks.
+   */
+  vtkSetMacro(CrackSeed, int);
+  vtkGetMacro(CrackSeed, int);
+  ///@}
+
+  ///@{
+  /**
+   * Brightness of the cracks' highlights. Default 1.
+   */
+  vtkSetClampMacro(CrackIntensity, double, 0.0, 100.0);
+  vtkGetMacro(CrackIntensity, double);
+  ///@}
+
+  enum CrackClippingModes
+  {
+    DepthInterval = 0, // per fragment, against the ice's [front, back] depth (the paper)
+    Geometry = 1       // once on the CPU against the ice surface: exact for concave ice
+  };
+
+  ///@{
+  /**
+   * How cracks are kept inside the ice. Default DepthInterval.
+   */
+  vtkSetClampMacro(CrackClipping, int, DepthInterval, Geometry);
+  vtkGetMacro(CrackClipping, int);
+  void SetCrackClippingToDepthInterval() { this->SetCrackClipping(DepthInterval); }
+  void SetCrackClippingToGeometry() { this->SetCrackClipping(Geometry); }
+  ///@}
+
+  ///@{
+  /**
+   * Let the cracks' normals perturb the refraction (the paper's experiment): cracks are drawn
+   * into the back-face normal texture too. Default off.
+   */
+  vtkSetMacro(CracksPerturbRefraction, bool);
+  vtkGetMacro(CracksPerturbRefraction, bool);
+  vtkBooleanMacro(CracksPerturbRefraction, bool);
+  ///@}
+
+  enum DebugViews
+  {
+    DebugOff = 0,
+    DebugFrontDepth = 1,      // the ice's front depth (near black, far white)
+    DebugBackDepth = 2,       // the ice's back depth
+    DebugCracksUnclipped = 3, // cracks in red, not clipped, over everything
+    DebugCracksClipped = 4    // cracks in red, clipped
+  };
+
+  ///@{
+  /**
+   * The paper's Figure 5 views. Default DebugOff.
+   */
+  vtkSetClampMacro(DebugView, int, DebugOff, DebugCracksClipped);
+  vtkGetMacro(DebugView, int);
+  ///@}
+
+  /**
+   * The crack surfaces in the input's coordinates: NumberOfCracks instances of three generic
+   * crack models, randomly rotated, near the centre, scaled to the input's bounds; clipped to the
+   * ice surface in Geometry mode. Rebuilt only when the input or a crack parameter changes.
+   */
+  vtkPolyData* GetCrackGeometry();
+
+  /**
+   * Draws the cracks of `actor` (vtkIcePass calls it). `overlay`: over the rendered scene, with
+   * additive blending; otherwise with the current state (into the back-face normal texture).
+   */
+  void RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
+
+  /**
+   * Number of crack draw calls since creation (one per RenderCracks with cracks).
+   */
+  vtkGetMacro(NumberOfCrackDraws, vtkIdType);
+
+  ///@{
+  /**
+   * The current frame's viewport-sized textures, set by vtkIcePass before rendering the scene and
+   * cleared afterwards: back-face normals (RGB world normal, alpha coverage) and the depth
+   * interval (R front, G back view depth). DepthRange is the view-depth range shown by the depth
+   * debug views.
+   */
+  void SetBackfaceNormalTexture(vtkTextureObject* texture);
+  vtkTextureObject* GetBackfaceNormalTexture();
+  void SetDepthIntervalTexture(vtkTextureObject* texture);
+  vtkTextureObject* GetDepthIntervalTexture();
+  vtkSetVector2Macro(DepthRange, double);
+  vtkGetVector2Macro(DepthRange, double);
   ///@}
 
   /**
@@ -99,21 +194,6 @@ public:
    */
   static vtkIceMapper* GetIceMapperOf(vtkProp* prop);
 
-  /**
-   * Draws the ice. Validates the input and adds normals before the usual OpenGL rendering.
-   */
-  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
-
-  /**
-   * Bounds of the input. Also checks the input, so that bad input is reported even when the
-   * renderer culls the actor (empty data has no bounds).
-   */
-  double* GetBounds() override;
-  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
-
-  /**
-   * Frees the OpenGL resources of this mapper (and of its built-in sky) for the window.
-   */
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
   /**
@@ -128,41 +208,44 @@ protected:
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderValues(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceIceShaderValues(std::string& vertexShader, std::string& fragmentShader,
+    vtkRenderer* ren, vtkActor* act) override;
+  void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  // Whether the shader being built samples back-face normals.
-  bool UseTwoSidedShader() const;
+  // Which optional shader parts the next build includes (two-sided, depth debug view).
+  int ShaderVariant() const;
 
-  // Checks the input and builds the polydata actually drawn (input plus ice normals).
-  bool PrepareInput(vtkPolyData* input);
   // The cube map the ice samples: the prop's dynamic cube map, the renderer's environment texture
   // or the built-in sky. Binds it and returns it.
   vtkTextureObject* BindEnvironment(vtkRenderer* ren, vtkActor* act);
   vtkTexture* SelectEnvironment(vtkRenderer* ren);
-  // Whether the helper being compiled draws surfaces (ice) rather than lines or points.
-  bool IsSurfaceHelper(const vtkOpenGLHelper* helper) const;
 
   double RefractionRatio;
   double FresnelPower;
   double BackNormalWeight;
   double IceColor[3];
   bool TwoSidedRefraction = true;
+  int NumberOfCracks = 2;
+  int CrackSeed = 1;
+  double CrackIntensity = 1.0;
+  int CrackClipping = DepthInterval;
+  bool CracksPerturbRefraction = false;
+  int DebugView = DebugOff;
+  double DepthRange[2] = { 0.0, 1.0 };
+  vtkIdType NumberOfCrackDraws = 0;
 
   vtkSmartPointer<vtkTextureObject> BackfaceNormalTexture;
-  std::map<const vtkOpenGLHelper*, bool> TwoSidedShaderBuilt;
-
-  vtkSmartPointer<vtkPolyData> PreparedInput;
-  vtkMTimeType PreparedInputTime = 0;
-  vtkPolyData* PreparedSource = nullptr;
-  bool PreparedValid = false;
+  vtkSmartPointer<vtkTextureObject> DepthIntervalTexture;
+  std::map<const vtkOpenGLHelper*, int> ShaderVariantBuilt;
 
   vtkSmartPointer<vtkTexture> FallbackEnvironment;
   vtkTexture* ActiveEnvironment = nullptr;             // bound vtkTexture, if one is used
   vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples
   bool WarnedNoEnvironment = false;
+
+  class vtkCracks;
+  vtkCracks* Cracks;
 
 private:
   vtkIceMapper(const vtkIceMapper&) = delete;

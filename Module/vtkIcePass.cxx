@@ -2,6 +2,7 @@
 
 #include "vtkIceBackfaceNormalPass.h"
 #include "vtkIceCubeMapPass.h"
+#include "vtkIceDepthIntervalPass.h"
 #include "vtkIceMapper.h"
 
 #include "vtkActor.h"
@@ -9,7 +10,10 @@
 #include "vtkNew.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkTranslucentPass.h"
+#include "vtkFrameBufferObjectBase.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -36,6 +40,7 @@ vtkIcePass::vtkIcePass()
   this->DepthPeeling = peeling;
 
   this->BackfaceNormalPass = vtkIceBackfaceNormalPass::New();
+  this->DepthIntervalPass = vtkIceDepthIntervalPass::New();
 }
 
 //------------------------------------------------------------------------------
@@ -63,6 +68,7 @@ vtkIcePass::~vtkIcePass()
   this->OrderIndependentTranslucency->Delete();
   this->DepthPeeling->Delete();
   this->BackfaceNormalPass->Delete();
+  this->DepthIntervalPass->Delete();
 }
 
 //------------------------------------------------------------------------------
@@ -99,6 +105,12 @@ void vtkIcePass::Render(const vtkRenderState* s)
       this->CubeMapPass->Render(&iceState);
       this->CubeMapPass->AttachCubeMaps(&iceState);
     }
+    this->DepthIntervalPass->Render(&iceState);
+    for (vtkIceMapper* mapper : iceMappers)
+    {
+      mapper->SetDepthIntervalTexture(this->DepthIntervalPass->GetDepthTexture());
+      mapper->SetDepthRange(this->DepthIntervalPass->GetDepthRange());
+    }
     this->BackfaceNormalPass->Render(&iceState);
     for (vtkIceMapper* mapper : iceMappers)
     {
@@ -112,9 +124,11 @@ void vtkIcePass::Render(const vtkRenderState* s)
 
   if (runIcePasses)
   {
+    this->RenderCracks(s, &iceState);
     for (vtkIceMapper* mapper : iceMappers)
     {
       mapper->SetBackfaceNormalTexture(nullptr);
+      mapper->SetDepthIntervalTexture(nullptr);
     }
     if (this->CubeMapPass)
     {
@@ -124,9 +138,38 @@ void vtkIcePass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+void vtkIcePass::RenderCracks(const vtkRenderState* s, const vtkRenderState* iceState)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkOpenGLState* state =
+    static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglScissor scissorSaver(state);
+  // The renderer's area of the target the delegate drew into, as vtkCameraPass sets it.
+  int size[2];
+  int origin[2] = { 0, 0 };
+  if (vtkFrameBufferObjectBase* target = s->GetFrameBuffer())
+  {
+    target->GetLastSize(size);
+  }
+  else
+  {
+    renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  }
+  state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
+  state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
+  for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = iceState->GetPropArray()[i];
+    vtkIceMapper::GetIceMapperOf(prop)->RenderCracks(renderer, static_cast<vtkActor*>(prop), true);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
+  this->DepthIntervalPass->ReleaseGraphicsResources(w);
   if (this->CubeMapPass)
   {
     this->CubeMapPass->ReleaseGraphicsResources(w);

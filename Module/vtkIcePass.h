@@ -14,8 +14,10 @@
  * 1. environment: with a vtkIceCubeMapPass set (SetCubeMapPass), each ice prop gets a cube map of
  *    the scene around it (dynamic environment); without one, the renderer's environment texture
  *    is used (static environment),
- * 2. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1),
- * 3. depth interval (front and back depth of the ice; reserved for vtkIceDepthIntervalPass).
+ * 2. depth interval (vtkIceDepthIntervalPass: front and back depth of the ice, for the cracks),
+ * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
+ * After the delegate it draws the ice mappers' cracks over the scene, clipped to the ice: one
+ * draw per ice prop however many cracks it has.
  *
  * @sa vtkIceMapper vtkIceBackfaceNormalPass
  */
@@ -27,6 +29,7 @@
 
 class vtkIceBackfaceNormalPass;
 class vtkIceCubeMapPass;
+class vtkIceDepthIntervalPass;
 
 class RENDERINGICE_EXPORT vtkIcePass : public vtkRenderPass
 {
@@ -56,9 +59,10 @@ public:
   ///@}
 
   /**
-   * The back-face normal sub-pass (always present).
+   * The back-face normal and depth-interval sub-passes (always present).
    */
   vtkGetObjectMacro(BackfaceNormalPass, vtkIceBackfaceNormalPass);
+  vtkGetObjectMacro(DepthIntervalPass, vtkIceDepthIntervalPass);
 
   /**
    * Number of ice props found in the last Render.
@@ -72,12 +76,16 @@ protected:
   // Matches the default delegate's translucent pass to the renderer's depth-peeling setting.
   void ConfigureDefaultDelegate(vtkRenderer* renderer);
 
+  // Draws the ice props' cracks over the rendered scene.
+  void RenderCracks(const vtkRenderState* s, const vtkRenderState* iceState);
+
   vtkRenderPass* DelegatePass = nullptr;
   vtkRenderPass* DefaultDelegate = nullptr;
   vtkRenderPass* OrderIndependentTranslucency = nullptr;
   vtkRenderPass* DepthPeeling = nullptr;
   vtkIceBackfaceNormalPass* BackfaceNormalPass = nullptr;
   vtkIceCubeMapPass* CubeMapPass = nullptr;
+  vtkIceDepthIntervalPass* DepthIntervalPass = nullptr;
   int NumberOfIceProps = 0;
 
 private:

@@ -21,6 +21,16 @@ inline std::string Get(const std::string& snippet, const std::string& name)
   return snippet.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
 }
 
+// Adds global declarations to a complete shader source, just before main().
+inline void InsertDeclarations(std::string& source, const std::string& declarations)
+{
+  const std::string::size_type main = source.find("void main()");
+  if (main != std::string::npos)
+  {
+    source.insert(main, declarations);
+  }
+}
+
 // Appends `code` after VTK's `tag`, keeping the tag so VTK still expands it before our code.
 inline std::string AfterTag(const std::string& tag, const std::string& code)
 {

@@ -1,9 +1,6 @@
 //ICE::Dec
-in vec3 icePositionWC;
-in vec3 iceNormalWC;
 in float iceFresnelFactor;
 uniform samplerCube iceEnvironment;
-uniform vec3 iceCameraWC;
 uniform float iceRefractionRatio;
 uniform vec3 iceTint;
 //ICE::Impl
@@ -16,5 +13,6 @@ uniform vec3 iceTint;
     vec3 refracted = texture(iceEnvironment, iceRefract(e, nRefract, iceRefractionRatio)).rgb;
     vec3 reflected = texture(iceEnvironment, iceReflect(e, nFront)).rgb;
     gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(iceFresnelFactor, 0.0, 1.0));
+    //ICEHOOK::Debug
   }
   //ICEHOOK::Output

@@ -40,7 +40,9 @@ int TestIceFigure4(int argc, char* argv[])
     options.Landscape = false;
     options.DynamicEnvironment = false;
     ice[side] = IceScene::Populate(renderers[side], teapot, environment, options);
-    vtkIceMapper::SafeDownCast(ice[side]->GetMapper())->SetTwoSidedRefraction(side == 0);
+    vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(ice[side]->GetMapper());
+    mapper->SetTwoSidedRefraction(side == 0);
+    mapper->SetNumberOfCracks(0); // as in the paper's figure: cracks and air off
     window->AddRenderer(renderers[side]);
   }
 

@@ -36,6 +36,7 @@ struct Ice
     this->Sphere->SetThetaResolution(200);
     this->Sphere->SetPhiResolution(200);
     this->Mapper->SetInputConnection(this->Sphere->GetOutputPort());
+    this->Mapper->SetNumberOfCracks(0); // clean optics
     this->Actor->SetMapper(this->Mapper);
     renderer->AddActor(this->Actor);
   }

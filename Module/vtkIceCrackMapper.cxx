@@ -1,0 +1,86 @@
+#include "vtkIceCrackMapper.h"
+
+#include "vtkIceCrackFS.h"
+#include "vtkIceCrackVS.h"
+#include "vtkIceShaderSections.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+vtkStandardNewMacro(vtkIceCrackMapper);
+
+//------------------------------------------------------------------------------
+vtkIceCrackMapper::vtkIceCrackMapper() = default;
+
+//------------------------------------------------------------------------------
+vtkIceCrackMapper::~vtkIceCrackMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkIceCrackMapper::SetDepthIntervalTexture(vtkTextureObject* texture)
+{
+  // A per-frame texture read as a uniform: not a reason to rebuild anything.
+  this->DepthIntervalTexture = texture;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIceCrackMapper::GetDepthIntervalTexture()
+{
+  return this->DepthIntervalTexture;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCrackMapper::ReplaceIceShaderValues(
+  std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
+{
+  using vtkIceShaderSections::AfterTag;
+  using vtkIceShaderSections::Get;
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceCrackVS, "Dec")));
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceCrackVS, "Impl")));
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceCrackFS, "Dec")));
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Normal::Impl", AfterTag("//VTK::Normal::Impl", Get(vtkIceCrackFS, "Normal")));
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceCrackFS, "Impl")));
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCrackMapper::SetIceShaderParameters(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkActor*)
+{
+  if (this->DepthIntervalTexture)
+  {
+    this->BindScreenTexture(program, ren, this->DepthIntervalTexture, "iceDepthInterval");
+  }
+  program->SetUniformi("iceCrackClip", this->ClipToInterval && this->DepthIntervalTexture ? 1 : 0);
+  program->SetUniformi("iceCrackDebug", this->DebugColor ? 1 : 0);
+  program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Intensity));
+  program->SetUniformf("iceBumpStrength", static_cast<float>(this->BumpStrength));
+  program->SetUniformf("iceBumpFrequency", static_cast<float>(this->BumpFrequency));
+
+  vtkCamera* camera = ren->GetActiveCamera();
+  // Not GetProjectionTransformMatrix(ren): that one is transposed and must be deleted.
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0);
+  const float depthToWindow[4] = { static_cast<float>(projection->GetElement(2, 2)),
+    static_cast<float>(projection->GetElement(2, 3)),
+    camera->GetParallelProjection() ? 1.0f : 0.0f, 0.0f };
+  program->SetUniform4f("iceDepthToWindow", depthToWindow);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCrackMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ClipToInterval: " << this->ClipToInterval << "\n";
+  os << indent << "DebugColor: " << this->DebugColor << "\n";
+  os << indent << "Intensity: " << this->Intensity << "\n";
+  os << indent << "BumpStrength: " << this->BumpStrength << "\n";
+  os << indent << "BumpFrequency: " << this->BumpFrequency << "\n";
+}

@@ -1,0 +1,103 @@
+#include "vtkIceCrackSource.h"
+
+#include "vtkIceNoise.h"
+
+#include "vtkCellArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+
+#include <cmath>
+#include <cstdint>
+
+vtkStandardNewMacro(vtkIceCrackSource);
+
+//------------------------------------------------------------------------------
+vtkIceCrackSource::vtkIceCrackSource()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+int vtkIceCrackSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const std::uint32_t seed = static_cast<std::uint32_t>(this->Seed);
+  auto uniform = [seed](std::uint32_t i) { return vtkIceNoise::Uniform(seed, i); };
+
+  // Shape parameters of this model: bowl and saddle curvature, roughness, outline raggedness.
+  const double bowl = 0.35 * (uniform(0) - 0.5);
+  const double saddle = 0.35 * (uniform(1) - 0.5);
+  const double roughness = 0.04 + 0.04 * uniform(2);
+  const double ragged = 0.25 + 0.2 * uniform(3);
+
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0.0, 0.0, 0.0);
+  for (int ring = 1; ring <= this->Rings; ++ring)
+  {
+    for (int sector = 0; sector < this->Sectors; ++sector)
+    {
+      const double angle = 2.0 * vtkMath::Pi() * sector / this->Sectors;
+      // The outline's radius varies smoothly (and periodically) with the angle.
+      const double around[3] = { 1.3 * std::cos(angle), 1.3 * std::sin(angle), 0.5 };
+      const double outline = 1.0 + ragged * vtkIceNoise::FractalNoise(around, seed + 17);
+      const double r = outline * ring / this->Rings;
+      const double x = r * std::cos(angle);
+      const double y = r * std::sin(angle);
+      const double p[3] = { 2.0 * x, 2.0 * y, 0.0 };
+      const double z = bowl * (x * x + y * y) + saddle * (x * x - y * y) +
+        roughness * vtkIceNoise::FractalNoise(p, seed + 31);
+      points->InsertNextPoint(x, y, z);
+    }
+  }
+
+  vtkNew<vtkCellArray> triangles;
+  const int n = this->Sectors;
+  auto id = [n](int ring, int sector) { return 1 + (ring - 1) * n + (sector % n); };
+  for (int sector = 0; sector < n; ++sector)
+  {
+    const vtkIdType fan[3] = { 0, id(1, sector), id(1, sector + 1) };
+    triangles->InsertNextCell(3, fan);
+  }
+  for (int ring = 1; ring < this->Rings; ++ring)
+  {
+    for (int sector = 0; sector < n; ++sector)
+    {
+      const vtkIdType a = id(ring, sector);
+      const vtkIdType b = id(ring, sector + 1);
+      const vtkIdType c = id(ring + 1, sector + 1);
+      const vtkIdType d = id(ring + 1, sector);
+      const vtkIdType first[3] = { a, d, c };
+      const vtkIdType second[3] = { a, c, b };
+      triangles->InsertNextCell(3, first);
+      triangles->InsertNextCell(3, second);
+    }
+  }
+
+  vtkNew<vtkPolyData> sheet;
+  sheet->SetPoints(points);
+  sheet->SetPolys(triangles);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(sheet);
+  normals->SplittingOff();
+  normals->ConsistencyOn();
+  normals->ComputeCellNormalsOff();
+  normals->Update();
+  output->ShallowCopy(normals->GetOutput());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCrackSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Rings: " << this->Rings << "\n";
+  os << indent << "Sectors: " << this->Sectors << "\n";
+}

@@ -1,0 +1,4 @@
+//ICE::Dec
+out vec3 iceCrackMC;
+//ICE::Impl
+  iceCrackMC = vertexMC.xyz;

@@ -1,0 +1,265 @@
+#include "vtkIceWorldSpaceMapper.h"
+
+#include "vtkIceShaderSections.h"
+#include "vtkIceWorldSpaceFS.h"
+#include "vtkIceWorldSpaceVS.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+const char* const IceNormalArray = "vtkIceNormals";
+
+bool HasOnlyFinitePoints(vtkPoints* points)
+{
+  vtkDataArray* data = points->GetData();
+  const vtkIdType n = data->GetNumberOfValues();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(data->GetComponent(i / 3, static_cast<int>(i % 3))))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkIceWorldSpaceMapper::vtkIceWorldSpaceMapper()
+{
+  this->MapDataArrayToVertexAttribute(
+    "iceNormalMC", IceNormalArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+}
+
+//------------------------------------------------------------------------------
+vtkIceWorldSpaceMapper::~vtkIceWorldSpaceMapper() = default;
+
+//------------------------------------------------------------------------------
+bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
+{
+  if (input == this->PreparedSource && input->GetMTime() == this->PreparedInputTime)
+  {
+    return this->PreparedValid;
+  }
+  this->PreparedSource = input;
+  this->PreparedInputTime = input->GetMTime();
+  this->PreparedValid = false;
+  this->PreparedInput = nullptr;
+
+  const vtkIdType surfaces = input->GetNumberOfPolys() + input->GetNumberOfStrips();
+  if (input->GetNumberOfPoints() == 0 || surfaces == 0)
+  {
+    vtkErrorMacro(<< "Input has no polygons to render as ice (" << input->GetNumberOfPoints()
+                  << " points, " << input->GetNumberOfLines() << " lines, "
+                  << input->GetNumberOfVerts() << " vertices); it is not drawn.");
+    return false;
+  }
+  if (!HasOnlyFinitePoints(input->GetPoints()))
+  {
+    vtkErrorMacro(<< "Input has NaN or infinite point coordinates; it is not drawn as ice.");
+    return false;
+  }
+
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  vtkSmartPointer<vtkDataArray> iceNormals;
+  this->PreparedInput = vtkSmartPointer<vtkPolyData>::New();
+  if (normals && normals->GetNumberOfComponents() == 3)
+  {
+    this->PreparedInput->ShallowCopy(input);
+    iceNormals.TakeReference(normals->NewInstance());
+    iceNormals->ShallowCopy(normals);
+  }
+  else
+  {
+    vtkNew<vtkPolyDataNormals> computeNormals;
+    computeNormals->SetInputData(input);
+    computeNormals->SplittingOff();
+    computeNormals->ConsistencyOn();
+    computeNormals->ComputeCellNormalsOff();
+    computeNormals->Update();
+    this->PreparedInput->ShallowCopy(computeNormals->GetOutput());
+    iceNormals = this->PreparedInput->GetPointData()->GetNormals();
+  }
+  iceNormals->SetName(IceNormalArray);
+  this->PreparedInput->GetPointData()->AddArray(iceNormals);
+  this->PreparedValid = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
+{
+  vtkPolyData* input = this->GetInput();
+  if (!input)
+  {
+    vtkErrorMacro(<< "No input.");
+    return;
+  }
+  if (!this->Static && this->GetInputAlgorithm())
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  if (!this->PrepareInput(input))
+  {
+    return;
+  }
+  this->Superclass::RenderPiece(ren, act);
+}
+
+//------------------------------------------------------------------------------
+double* vtkIceWorldSpaceMapper::GetBounds()
+{
+  double* bounds = this->Superclass::GetBounds();
+  if (vtkPolyData* input = this->GetInput())
+  {
+    this->PrepareInput(input);
+  }
+  return bounds;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  // Draw the prepared copy (input plus ice normals) instead of the raw input.
+  this->CurrentInput = this->PreparedInput;
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceFinish(ren, act);
+  for (vtkTextureObject* texture : this->BoundScreenTextures)
+  {
+    texture->Deactivate();
+  }
+  this->BoundScreenTextures.clear();
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceWorldSpaceMapper::IsSurfaceHelper(const vtkOpenGLHelper* helper) const
+{
+  return helper == &this->Primitives[PrimitiveTris] ||
+    helper == &this->Primitives[PrimitiveTriStrips];
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  if (this->IsSurfaceHelper(this->LastBoundBO))
+  {
+    using vtkIceShaderSections::AfterTag;
+    using vtkIceShaderSections::Get;
+    std::string vs = shaders[vtkShader::Vertex]->GetSource();
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    // Code inserted right after a tag lands before code inserted there earlier: the subclass goes
+    // first so that the world-space declarations and code end up before its own.
+    this->ReplaceIceShaderValues(vs, fs, ren, act);
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceWorldSpaceVS, "Dec")));
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceWorldSpaceVS, "Impl")));
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceWorldSpaceFS, "Dec")));
+    shaders[vtkShader::Vertex]->SetSource(vs);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+  }
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program || !this->IsSurfaceHelper(&cellBO))
+  {
+    return;
+  }
+
+  // Model to world, including the inverse of the VBO's coordinate shift and scale. Matrices are
+  // kept transposed, as VTK uploads them.
+  vtkNew<vtkMatrix4x4> mcwc;
+  vtkNew<vtkMatrix3x3> normalMCWC;
+  vtkOpenGLVertexBufferObject* vertices = this->VBOs->GetVBO("vertexMC");
+  if (vertices && vertices->GetCoordShiftAndScaleEnabled())
+  {
+    mcwc->DeepCopy(this->VBOShiftScale);
+  }
+  if (!act->GetIsIdentity())
+  {
+    vtkMatrix4x4* actorMCWC;
+    vtkMatrix3x3* actorNormals;
+    static_cast<vtkOpenGLActor*>(act)->GetKeyMatrices(actorMCWC, actorNormals);
+    vtkMatrix4x4::Multiply4x4(mcwc, actorMCWC, mcwc);
+    normalMCWC->DeepCopy(actorNormals);
+  }
+  program->SetUniformMatrix("iceMCWCMatrix", mcwc);
+  program->SetUniformMatrix("iceNormalMCWCMatrix", normalMCWC);
+
+  vtkCamera* camera = ren->GetActiveCamera();
+  double* eye = camera->GetPosition();
+  double* direction = camera->GetDirectionOfProjection();
+  const float eyeWC[3] = { static_cast<float>(eye[0]), static_cast<float>(eye[1]),
+    static_cast<float>(eye[2]) };
+  const float directionWC[3] = { static_cast<float>(direction[0]),
+    static_cast<float>(direction[1]), static_cast<float>(direction[2]) };
+  program->SetUniform3f("iceCameraWC", eyeWC);
+  program->SetUniform3f("iceViewDirectionWC", directionWC);
+
+  this->SetIceShaderParameters(program, ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::BindScreenTexture(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkTextureObject* texture, const char* sampler)
+{
+  if (!program->IsUniformUsed(sampler))
+  {
+    return;
+  }
+  // The texture covers the renderer's viewport, which starts at the current GL viewport's origin
+  // in whatever framebuffer this draw goes to.
+  int viewport[4];
+  static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())
+    ->GetState()
+    ->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  texture->Activate();
+  if (std::find(this->BoundScreenTextures.begin(), this->BoundScreenTextures.end(), texture) ==
+    this->BoundScreenTextures.end())
+  {
+    this->BoundScreenTextures.push_back(texture);
+  }
+  program->SetUniformi(sampler, texture->GetTextureUnit());
+  program->SetUniform2i("iceViewportOrigin", viewport);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

@@ -1,0 +1,90 @@
+/**
+ * @class   vtkIceWorldSpaceMapper
+ * @brief   Base of the ice mappers: fragment shaders get world-space position and normal.
+ *
+ * The ice optics work in world space. This vtkOpenGLPolyDataMapper adds to the surface shaders
+ * `icePositionWC` and `iceNormalWC` (from the actor's matrix and VTK's vertex-buffer shift and
+ * scale, whatever the lighting), the camera position and view direction, `iceViewDepth()` and
+ * `iceScreenTexel()` for viewport-sized textures. It validates the input (polygons, finite points)
+ * and computes point normals when there are none. Subclasses add their shading through
+ * ReplaceIceShaderValues and SetIceShaderParameters.
+ */
+#ifndef vtkIceWorldSpaceMapper_h
+#define vtkIceWorldSpaceMapper_h
+
+#include "RenderingIceModule.h" // for export macro
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkSmartPointer.h" // for members
+
+#include <string>  // for ReplaceIceShaderValues
+#include <vector>  // for members
+
+class vtkPolyData;
+class vtkTextureObject;
+
+class RENDERINGICE_EXPORT vtkIceWorldSpaceMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  vtkTypeMacro(vtkIceWorldSpaceMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Validates the input and adds normals before the usual OpenGL rendering.
+   */
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Bounds of the input. Also checks the input, so that bad input is reported even when the
+   * renderer culls the actor (empty data has no bounds).
+   */
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+
+protected:
+  vtkIceWorldSpaceMapper();
+  ~vtkIceWorldSpaceMapper() override;
+
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Subclasses add their shader code to the vertex and fragment sources of surface primitives;
+   * the world-space declarations are already in.
+   */
+  virtual void ReplaceIceShaderValues(
+    std::string& vertexShader, std::string& fragmentShader, vtkRenderer* ren, vtkActor* act) = 0;
+
+  /**
+   * Subclasses set their uniforms; the world-space ones are already set.
+   */
+  virtual void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) = 0;
+
+  /**
+   * Binds a viewport-sized texture (released after the draw) to `sampler`, and sets
+   * iceViewportOrigin.
+   */
+  void BindScreenTexture(
+    vtkShaderProgram* program, vtkRenderer* ren, vtkTextureObject* texture, const char* sampler);
+
+  // Whether the helper being compiled or drawn draws surfaces rather than lines or points.
+  bool IsSurfaceHelper(const vtkOpenGLHelper* helper) const;
+
+  // Checks the input and builds the polydata actually drawn (input plus ice normals).
+  bool PrepareInput(vtkPolyData* input);
+
+  vtkSmartPointer<vtkPolyData> PreparedInput;
+  vtkMTimeType PreparedInputTime = 0;
+  vtkPolyData* PreparedSource = nullptr;
+  bool PreparedValid = false;
+
+  std::vector<vtkTextureObject*> BoundScreenTextures;
+
+private:
+  vtkIceWorldSpaceMapper(const vtkIceWorldSpaceMapper&) = delete;
+  void operator=(const vtkIceWorldSpaceMapper&) = delete;
+};
+
+#endif
