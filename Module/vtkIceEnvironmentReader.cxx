@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <type_traits>
@@ -78,11 +79,20 @@ struct Plan
   bool Float = false;
 };
 
+// Opens `path` for reading. OpenImageIO premultiplies colour by unassociated alpha (PNG, TIFF)
+// by default; the reader drops alpha, so it asks for the colour as stored.
+std::unique_ptr<OIIO::ImageInput> Open(const std::string& path)
+{
+  OIIO::geterror(); // drop any stale message of this thread
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  return OIIO::ImageInput::open(path, &config);
+}
+
 // Opens `path` and reads its header; false and `failure` set if OpenImageIO cannot.
 bool ReadHeader(const std::string& path, OIIO::ImageSpec& spec, Failure& failure)
 {
-  OIIO::geterror(); // drop any stale message of this thread
-  auto input = OIIO::ImageInput::open(path);
+  auto input = Open(path);
   if (!input)
   {
     failure = { "Cannot read environment image '" + path + "': " + OneLine(OIIO::geterror()),
@@ -269,8 +279,7 @@ struct Raster
 template <typename T>
 bool ReadRGB(const std::string& path, const Plan& plan, Raster<T>& raster, Failure& failure)
 {
-  OIIO::geterror();
-  auto input = OIIO::ImageInput::open(path);
+  auto input = Open(path);
   if (!input)
   {
     failure = { "Cannot read environment image '" + path + "': " + OneLine(OIIO::geterror()),
@@ -533,7 +542,7 @@ int vtkIceEnvironmentReader::RequestData(
   {
     vtkImageData::GetData(outputVector, face)->Initialize();
   }
-  const Plan& plan = this->Internals->Current;
+  const Plan plan = this->Internals->Current;
   if (!plan.Valid)
   {
     // RequestInformation has reported the error; the outputs stay empty.
@@ -548,6 +557,9 @@ int vtkIceEnvironmentReader::RequestData(
     {
       vtkImageData::GetData(outputVector, face)->Initialize();
     }
+    // The empty outputs do not cover the extent announced by RequestInformation, so the pipeline
+    // runs RequestData again on the next update: report the error only this once.
+    this->Internals->Current = Plan();
     this->Layout = Unknown;
     this->ErrorCode = failure.Code;
     vtkErrorMacro(<< failure.Message);
