@@ -5,7 +5,8 @@
 // same pattern times 3 must come back as float with values above 1 and a small error; a grey
 // 8-bit panorama comes back as RGB. Bad input gives exactly one error and empty outputs, also when
 // a texture fed by the reader is rendered. Finally the faces read back, as a texture, must render
-// a skybox pixel-equal to vtkIceCubeMapSource's and pass the ice invisibility check.
+// a skybox pixel-equal to vtkIceCubeMapSource's and pass the ice invisibility check, and the float
+// faces of an EXR panorama must render a skybox within 1/255 of it.
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceEnvironmentReader.h"
@@ -229,8 +230,8 @@ bool CheckPanoramaConvention()
     "panorama convention: centre -Z, right quarter +X, edges +Z, top +Y");
 }
 
-// An equirectangular panorama of the DirectionTest pattern times PanoramaScale (RGB float).
-std::vector<float> MakePanorama(int width, int height)
+// An equirectangular panorama of the DirectionTest pattern times `scale` (RGB float).
+std::vector<float> MakePanorama(int width, int height, double scale)
 {
   vtkNew<vtkIceCubeMapSource> pattern;
   pattern->SetPatternToDirectionTest();
@@ -244,7 +245,7 @@ std::vector<float> MakePanorama(int width, int height)
       pattern->Evaluate(dir, rgb);
       for (int c = 0; c < 3; ++c)
       {
-        image[3 * (static_cast<size_t>(y) * width + x) + c] = static_cast<float>(PanoramaScale * rgb[c]);
+        image[3 * (static_cast<size_t>(y) * width + x) + c] = static_cast<float>(scale * rgb[c]);
       }
     }
   }
@@ -493,7 +494,7 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   // (d) A float EXR equirectangular panorama, 3 x the pattern; faces of width / 4 = 128.
   ok = CheckPanoramaConvention() && ok;
   const int panoramaWidth = 512;
-  const std::vector<float> panorama = MakePanorama(panoramaWidth, panoramaWidth / 2);
+  const std::vector<float> panorama = MakePanorama(panoramaWidth, panoramaWidth / 2, PanoramaScale);
   ok = WriteImage(temp + "/panorama.exr", panoramaWidth, panoramaWidth / 2, 3,
          OIIO::TypeDesc::FLOAT, panorama.data()) && ok;
   if (ReadAs(reader, temp + "/panorama.exr", vtkIceEnvironmentReader::Equirectangular,
@@ -597,6 +598,31 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   ok = Report(worst <= 1 && read.Background.Width == reference.Background.Width,
          "skybox of the reader's faces vs vtkIceCubeMapSource's: largest difference " +
            std::to_string(worst) + "/255") &&
+    ok;
+
+  // Float faces are uploaded as colours too: the skybox of an EXR panorama of the pattern (scale
+  // 1) matches vtkIceCubeMapSource's within the panorama's resampling error.
+  const std::vector<float> unitPanorama = MakePanorama(1024, 512, 1.0);
+  ok = WriteImage(temp + "/unit-panorama.exr", 1024, 512, 3, OIIO::TypeDesc::FLOAT,
+         unitPanorama.data()) && ok;
+  vtkNew<vtkIceEnvironmentReader> floatReader;
+  floatReader->SetFileName((temp + "/unit-panorama.exr").c_str());
+  floatReader->SetFaceSize(renderSize);
+  vtkNew<vtkTexture> floatTexture;
+  floatReader->ConfigureTexture(floatTexture);
+  const IceTest::Invisibility floatRender = IceTest::MeasureInvisibility(floatTexture);
+  ok = IceTest::ReportInvisibility("float faces of a panorama", floatRender) && ok;
+  std::vector<double> differences;
+  for (size_t p = 0; p < floatRender.Background.RGB.size() / 3; ++p)
+  {
+    differences.push_back(IceTest::PixelDifference(
+      &floatRender.Background.RGB[3 * p], &reference.Background.RGB[3 * p]));
+  }
+  const IceTest::Stats floatStats = IceTest::Summarize(differences);
+  ok = Report(floatStats.Mean <= 1.0 && floatStats.Max <= 4.0,
+         "skybox of float panorama faces vs vtkIceCubeMapSource's: mean " +
+           std::to_string(floatStats.Mean) + "/255, max " + std::to_string(floatStats.Max) +
+           "/255") &&
     ok;
 
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
