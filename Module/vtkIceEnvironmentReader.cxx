@@ -16,9 +16,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <string>
 #include <system_error>
 #include <type_traits>
@@ -115,7 +117,28 @@ bool IsEightBit(const OIIO::ImageSpec& spec)
   return spec.format.basetype == OIIO::TypeDesc::UINT8;
 }
 
-// The six face files of a folder; any extension, one file per face.
+// Whether OpenImageIO has a reader for files with extension `ext` (with its dot, any case).
+bool IsImageExtension(std::string ext)
+{
+  static const std::set<std::string> known = [] {
+    std::set<std::string> extensions;
+    for (const auto& format : OIIO::get_extension_map())
+    {
+      extensions.insert(format.second.begin(), format.second.end());
+    }
+    return extensions;
+  }();
+  if (ext.size() < 2 || ext[0] != '.')
+  {
+    return false;
+  }
+  ext.erase(0, 1);
+  std::transform(
+    ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return known.count(ext) > 0;
+}
+
+// The six face files of a folder: px, nx, ... with an extension OpenImageIO reads, one per face.
 bool FindFaces(const std::string& folder, std::vector<std::string>& files, Failure& failure)
 {
   std::vector<std::vector<std::string>> found(NumberOfFaces);
@@ -130,7 +153,7 @@ bool FindFaces(const std::string& folder, std::vector<std::string>& files, Failu
     const std::string stem = it->path().stem().string();
     for (int face = 0; face < NumberOfFaces; ++face)
     {
-      if (stem == FaceNames[face] && it->path().has_extension())
+      if (stem == FaceNames[face] && IsImageExtension(it->path().extension().string()))
       {
         found[face].push_back(it->path().string());
       }
@@ -148,7 +171,8 @@ bool FindFaces(const std::string& folder, std::vector<std::string>& files, Failu
     if (found[face].empty())
     {
       failure = { "Environment folder '" + folder + "' has no face image '" + FaceNames[face] +
-          ".*' (expected px, nx, py, ny, pz and nz, each with an image extension)",
+          ".*' (expected px, nx, py, ny, pz and nz, each with an extension OpenImageIO reads, "
+          "such as .png, .jpg, .exr, .hdr or .tif)",
         vtkErrorCode::FileNotFoundError };
       return false;
     }

@@ -448,6 +448,7 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   const int size = 64;
   const Faces faces = MakeFaces(size);
   ok = WriteFaces(faces, temp + "/faces") && ok;
+  std::ofstream(temp + "/faces/px.txt") << "notes are not a second px image\n";
   vtkNew<vtkIceEnvironmentReader> reader;
   if (ReadAs(reader, temp + "/faces", vtkIceEnvironmentReader::Faces, size, VTK_UNSIGNED_CHAR,
         "six PNG faces"))
@@ -557,6 +558,9 @@ int TestIceEnvironmentReader(int argc, char* argv[])
     fs::copy_file(temp + "/faces/" + FaceNames[face] + ".png",
       bad + "/missing-face/" + FaceNames[face] + ".png");
   }
+  std::ofstream(bad + "/missing-face/nz.txt") << "not an image\n";
+  fs::copy(temp + "/faces", bad + "/two-px");
+  fs::copy_file(temp + "/faces/px.png", bad + "/two-px/px.jpg");
   fs::copy(temp + "/faces", bad + "/not-square");
   const std::vector<unsigned char> wide(3 * 64 * 48, 128);
   ok = WriteImage(bad + "/not-square/py.png", 64, 48, 3, OIIO::TypeDesc::UINT8, wide.data()) && ok;
@@ -570,6 +574,7 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   ok = CheckBad(reader, (bad + "/garbage.png").c_str(), "Cannot read", "corrupt file") && ok;
   ok = CheckBad(reader, (bad + "/truncated.png").c_str(), "Cannot read", "truncated PNG") && ok;
   ok = CheckBad(reader, (bad + "/missing-face").c_str(), "no face image 'nz", "missing face") && ok;
+  ok = CheckBad(reader, (bad + "/two-px").c_str(), "more than one 'px'", "two px images") && ok;
   ok = CheckBad(reader, (bad + "/not-square").c_str(), "not square", "non-square face") && ok;
   ok = CheckBad(reader, (bad + "/sizes").c_str(), "one size", "faces of different sizes") && ok;
   ok = CheckBad(reader, (bad + "/square.png").c_str(), "no cube map layout", "1:1 image") && ok;
