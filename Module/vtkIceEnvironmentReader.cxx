@@ -284,8 +284,9 @@ bool MakePlan(const char* fileName, int faceSize, Plan& plan, Failure& failure)
     failure = { "Environment '" + path + "' does not exist", vtkErrorCode::FileNotFoundError };
     return false;
   }
-  const bool ok = std::filesystem::is_directory(status) ? MakeFacesPlan(path, plan, failure)
-                                                        : MakeImagePlan(path, faceSize, plan, failure);
+  const bool ok = std::filesystem::is_directory(status)
+    ? MakeFacesPlan(path, plan, failure)
+    : MakeImagePlan(path, faceSize, plan, failure);
   plan.Valid = ok;
   return ok;
 }
@@ -297,7 +298,10 @@ struct Raster
   int Width = 0;
   int Height = 0;
   std::vector<T> RGB;
-  const T* At(int x, int y) const { return &this->RGB[3 * (static_cast<size_t>(y) * this->Width + x)]; }
+  const T* At(int x, int y) const
+  {
+    return &this->RGB[3 * (static_cast<size_t>(y) * this->Width + x)];
+  }
 };
 
 template <typename T>
@@ -430,8 +434,8 @@ void SampleFace(const Raster<T>& panorama, int face, int size, T* out)
 template <typename T>
 bool ReadFaces(const Plan& plan, vtkInformationVector* outputVector, Failure& failure)
 {
-  using ArrayType =
-    typename std::conditional<std::is_same<T, float>::value, vtkFloatArray, vtkUnsignedCharArray>::type;
+  using ArrayType = typename std::conditional<std::is_same<T, float>::value, vtkFloatArray,
+    vtkUnsignedCharArray>::type;
   const int size = plan.FaceSize;
   std::array<vtkSmartPointer<ArrayType>, NumberOfFaces> faces;
   for (auto& face : faces)

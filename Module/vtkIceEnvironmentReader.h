@@ -11,8 +11,9 @@
  * FileName is one of:
  * - A folder holding six face images named px, nx, py, ny, pz, nz (for +X, -X, +Y, -Y, +Z, -Z)
  *   with any extension OpenImageIO reads (png, jpg, exr, hdr, tif, ...), exactly one per face;
- *   other files are ignored. All six square and of one size. Each face is the OpenGL cube face seen from inside the cube, in the usual image
- *   convention: the top row of the file is the face's t = 0 row, the left column its s = 0.
+ *   other files are ignored. All six square and of one size. Each face is the OpenGL cube face
+ *   seen from inside the cube, in the usual image convention: the top row of the file is the
+ *   face's t = 0 row, the left column its s = 0.
  * - A single image whose aspect ratio selects the layout:
  *   - 4:3, a horizontal cross of four by three faces:
  *     @verbatim
