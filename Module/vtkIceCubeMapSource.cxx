@@ -1,14 +1,12 @@
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceCubeMapTexture.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
-#include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -18,7 +16,7 @@ vtkStandardNewMacro(vtkIceCubeMapSource);
 
 namespace
 {
-constexpr int NumberOfFaces = 6;
+constexpr int NumberOfFaces = vtkIceCubeMapTexture::NumberOfFaces;
 
 double Smooth(double edge0, double edge1, double x)
 {
@@ -144,28 +142,14 @@ void vtkIceCubeMapSource::TexelDirection(int face, int i, int j, int size, doubl
 //------------------------------------------------------------------------------
 void vtkIceCubeMapSource::ConfigureTexture(vtkTexture* texture)
 {
-  texture->CubeMapOn();
-  texture->InterpolateOn();
-  texture->MipmapOff();
-  texture->RepeatOff();
-  texture->EdgeClampOn();
-  for (int face = 0; face < NumberOfFaces; ++face)
-  {
-    texture->SetInputConnection(face, this->GetOutputPort(face));
-  }
+  vtkIceCubeMapTexture::Configure(texture, this);
 }
 
 //------------------------------------------------------------------------------
 int vtkIceCubeMapSource::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  const int extent[6] = { 0, this->FaceSize - 1, 0, this->FaceSize - 1, 0, 0 };
-  for (int face = 0; face < NumberOfFaces; ++face)
-  {
-    vtkInformation* info = outputVector->GetInformationObject(face);
-    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-    vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_UNSIGNED_CHAR, 3);
-  }
+  vtkIceCubeMapTexture::SetFaceInformation(outputVector, this->FaceSize, VTK_UNSIGNED_CHAR);
   return 1;
 }
 

@@ -21,11 +21,12 @@
 namespace
 {
 const char* const Usage =
-  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|DIR] [--size WxH]\n"
+  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|PATH] [--size WxH]\n"
   "                  [--out FILE] [--one-sided] [--static] [--interactive]\n"
   "Renders a model as ice (default: the teapot in a small landscape) to ice.png.\n"
   "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
-  "  --env    sky, test, or a folder with cube faces px nx py ny pz nz (.png/.jpg/.bmp/.tif)\n"
+  "  --env    sky, test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
+  "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too)\n"
   "  --size   image size, default 1024x768\n"
   "  --out    output PNG, default ice.png\n"
   "  --one-sided  refract at the front face only (the default blends in the back face)\n"

@@ -2,6 +2,7 @@
 
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceEnvironmentReader.h"
 #include "vtkIceMapper.h"
 #include "vtkIceCubeMapPass.h"
 #include "vtkIcePass.h"
@@ -10,13 +11,10 @@
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkImageData.h"
 #include "vtkConeSource.h"
 #include "vtkCylinderSource.h"
 #include "vtkExecutive.h"
-#include "vtkImageData.h"
-#include "vtkImageFlip.h"
-#include "vtkImageReader2.h"
-#include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
 #include "vtkLight.h"
 #include "vtkLogger.h"
@@ -323,60 +321,15 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
     return texture;
   }
 
-  // CubeMapOn first: it gives the texture its six input ports.
-  texture->CubeMapOn();
-  texture->InterpolateOn();
-  texture->MipmapOff();
-  texture->EdgeClampOn();
-  static const char* const faces[6] = { "px", "nx", "py", "ny", "pz", "nz" };
-  static const char* const extensions[5] = { "png", "jpg", "jpeg", "bmp", "tif" };
-  int size = -1;
-  for (int face = 0; face < 6; ++face)
+  // A folder of six faces, a cross or a panorama; the reader names the file and the problem.
+  vtkNew<vtkIceEnvironmentReader> reader;
+  reader->SetFileName(environment.c_str());
+  if (!UpdateQuietly(reader, error))
   {
-    std::string path;
-    for (const char* ext : extensions)
-    {
-      const std::string candidate = environment + "/" + faces[face] + "." + ext;
-      if (Readable(candidate))
-      {
-        path = candidate;
-        break;
-      }
-    }
-    if (path.empty())
-    {
-      error = "environment '" + environment + "' has no readable face image " + faces[face] +
-        ".png (or .jpg, .bmp, .tif); expected px, nx, py, ny, pz, nz";
-      return nullptr;
-    }
-    vtkSmartPointer<vtkImageReader2> reader;
-    reader.TakeReference(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
-    if (!reader)
-    {
-      error = "cannot read environment face '" + path + "'";
-      return nullptr;
-    }
-    reader->SetFileName(path.c_str());
-    if (!UpdateQuietly(reader, error))
-    {
-      error = "cannot read environment face '" + path + "': " + error;
-      return nullptr;
-    }
-    int dims[3];
-    reader->GetOutput()->GetDimensions(dims);
-    if (dims[0] != dims[1] || dims[0] <= 0 || (size >= 0 && dims[0] != size))
-    {
-      error = "environment faces must be square and of one size; '" + path + "' is " +
-        std::to_string(dims[0]) + "x" + std::to_string(dims[1]);
-      return nullptr;
-    }
-    size = dims[0];
-    // Cube map faces are stored top row first; VTK's readers put the bottom row first.
-    vtkNew<vtkImageFlip> flip;
-    flip->SetInputConnection(reader->GetOutputPort());
-    flip->SetFilteredAxis(1);
-    texture->SetInputConnection(face, flip->GetOutputPort());
+    error = "cannot load environment '" + environment + "': " + error;
+    return nullptr;
   }
+  reader->ConfigureTexture(texture);
   return texture;
 }
 

@@ -18,9 +18,10 @@ namespace IceScene
 // origin and scaled so its largest extent is 2. Returns nullptr and sets `error` on failure.
 vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& error);
 
-// "sky" (procedural landscape), "test" (smooth direction pattern) or a folder holding six face
-// images px, nx, py, ny, pz, nz (.png, .jpg, .bmp or .tif; all square, all the same size).
-// Returns nullptr and sets `error` on failure.
+// "sky" (procedural landscape), "test" (smooth direction pattern), or a path for
+// vtkIceEnvironmentReader: a folder holding six face images px, nx, py, ny, pz, nz (any image
+// extension; all square, all the same size), a horizontal (4:3) or vertical (3:4) cross image, or
+// an equirectangular (2:1) panorama, 8-bit or HDR. Returns nullptr and sets `error` on failure.
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error);
 
 struct Options

@@ -1,7 +1,9 @@
 #include "IceTestUtilities.h"
 
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceMapper.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
@@ -10,6 +12,8 @@
 #include "vtkPNGReader.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
+#include "vtkSkybox.h"
+#include "vtkSphereSource.h"
 #include "vtkTesting.h"
 #include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
@@ -265,6 +269,81 @@ bool ReportReference(const std::string& name, const Stats& stats, size_t minimum
   std::cout << (ok ? "ok   " : "FAIL ") << name << ": " << stats.Count
             << " interior pixels, |rendered - reference| mean " << stats.Mean << "/255, p99 "
             << stats.P99 << "/255, max " << stats.Max << "/255\n";
+  return ok;
+}
+
+namespace
+{
+Stats MaskedDifference(const Image& a, const Image& b, const std::vector<bool>& mask)
+{
+  std::vector<double> differences;
+  for (size_t p = 0; p < mask.size(); ++p)
+  {
+    if (mask[p])
+    {
+      differences.push_back(PixelDifference(&a.RGB[3 * p], &b.RGB[3 * p]));
+    }
+  }
+  return Summarize(differences);
+}
+}
+
+Invisibility MeasureInvisibility(vtkTexture* environment)
+{
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(environment);
+  renderer->AddActor(skybox);
+
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(128);
+  sphere->SetPhiResolution(128);
+  vtkNew<vtkIceMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ice;
+  ice->SetMapper(mapper);
+  renderer->AddActor(ice);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(300, 300);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(1.5, 0.4, 3.2);
+  renderer->ResetCameraClippingRange();
+
+  Invisibility result;
+  ice->VisibilityOff();
+  window->Render();
+  result.Background = Capture(window);
+  const std::vector<bool> interior = SphereInterior(renderer, center, 1.0, 3);
+
+  ice->VisibilityOn();
+  mapper->SetRefractionRatio(1.0);
+  mapper->SetFresnelPower(1.0e6);
+  window->Render();
+  result.Invisible = MaskedDifference(result.Background, Capture(window), interior);
+
+  mapper->SetRefractionRatio(1.0003 / 1.3091);
+  mapper->SetFresnelPower(3.0);
+  window->Render();
+  result.Visible = MaskedDifference(result.Background, Capture(window), interior);
+  return result;
+}
+
+bool ReportInvisibility(const std::string& name, const Invisibility& result)
+{
+  const Stats& invisible = result.Invisible;
+  const Stats& visible = result.Visible;
+  const bool ok = invisible.Count > 20000 && invisible.Mean <= 1.0 && invisible.P99 <= 4.0 &&
+    visible.Mean >= 5.0;
+  std::cout << (ok ? "ok   " : "FAIL ") << name << ": eta 1: " << invisible.Count
+            << " interior pixels differ from the skybox by mean " << invisible.Mean << "/255, p99 "
+            << invisible.P99 << "/255, max " << invisible.Max << "/255; default ice: mean "
+            << visible.Mean << "/255, p99 " << visible.P99 << "/255\n";
   return ok;
 }
 

@@ -81,6 +81,23 @@ Stats CompareSphereWithReference(vtkRenderer* renderer, const Image& image, cons
 // `minimumPixels` compared, mean <= 2/255, p99 <= 8/255.
 bool ReportReference(const std::string& name, const Stats& stats, size_t minimumPixels);
 
+// The invisibility check of the ice optics against vtkSkybox's cube-map convention: an ice sphere
+// (radius 1 at the origin) in front of a skybox of `environment` (also the renderer's environment
+// texture), in a 300x300 window, rendered without ice (Background), with RefractionRatio 1 and
+// FresnelPower 1e6 (Invisible: difference from the background over the sphere's interior) and
+// with the default ice (Visible). Differences are the largest channel error in 0..255.
+struct Invisibility
+{
+  Image Background;
+  Stats Invisible;
+  Stats Visible;
+};
+Invisibility MeasureInvisibility(vtkTexture* environment);
+
+// Prints the figures and checks the bounds: over 20 000 interior pixels, invisible ice within
+// mean 1/255 and p99 4/255 of the background, default ice at least 5/255 off on average.
+bool ReportInvisibility(const std::string& name, const Invisibility& result);
+
 // Records the error and warning messages an object emits (and keeps them off the console).
 class MessageRecorder : public vtkCommand
 {

@@ -1,3 +1,4 @@
+#include "vtkIceEnvironmentReader.h"
 #include "vtkIceMapper.h"
 #include "vtkIceTeapotSource.h"
 #include "vtkNew.h"
@@ -10,7 +11,10 @@ int main()
   teapot->Update();
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(teapot->GetOutputPort());
+  // The reader's header needs no OpenImageIO headers (the library links OpenImageIO privately).
+  vtkNew<vtkIceEnvironmentReader> reader;
   std::cout << mapper->GetClassName() << " eta " << mapper->GetRefractionRatio() << ", teapot "
-            << teapot->GetOutput()->GetNumberOfPolys() << " triangles\n";
+            << teapot->GetOutput()->GetNumberOfPolys() << " triangles, "
+            << reader->GetClassName() << " layout " << reader->GetLayoutAsString() << "\n";
   return teapot->GetOutput()->GetNumberOfPolys() > 0 ? 0 : 1;
 }

@@ -46,6 +46,33 @@ mkdir -p faces && for f in px nx py ny pz nz; do cp sphere.png faces/$f.png; don
 expect_error "non-square faces" "square" --env faces --size 64x48 --out x.png
 mkdir -p cube && for f in px nx py ny pz nz; do "$ice_render" --model sphere --size 32x32 --out cube/$f.png >/dev/null; done
 expect_ok "six face images" --env cube --size 64x48 --out cube.png
+mkdir -p incomplete && cp cube/px.png cube/nx.png cube/py.png cube/ny.png cube/pz.png incomplete/
+expect_error "missing face image" "no face image 'nz" --env incomplete --size 64x48 --out x.png
+# Single images: the aspect ratio picks the layout (renders of the right sizes serve as images).
+"$ice_render" --size 128x96 --out hcross.png >/dev/null
+expect_ok "horizontal cross image" --env hcross.png --size 64x48 --out hcross-env.png
+"$ice_render" --size 96x128 --out vcross.png >/dev/null
+expect_ok "vertical cross image" --env vcross.png --size 64x48 --out vcross-env.png
+"$ice_render" --size 128x64 --out panorama.png >/dev/null
+expect_ok "panorama PNG" --env panorama.png --size 64x48 --out panorama-env.png
+# A Radiance HDR panorama with values above 1 (flat RGBE scanlines, no run-length coding).
+/usr/bin/python3 - <<'PY'
+import math
+width, height = 64, 32
+with open("panorama.hdr", "wb") as f:
+    f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width))
+    for y in range(height):
+        for x in range(width):
+            value = 0.2 + 3.0 * (1.0 - y / height)  # brighter toward the top, up to 3.2
+            mantissa, exponent = math.frexp(value)
+            m = int(mantissa * 256)
+            f.write(bytes([m, m, m // 2, exponent + 128]))
+PY
+expect_ok "HDR panorama" --env panorama.hdr --size 64x48 --out hdr-env.png
+"$ice_render" --size 50x40 --out odd.png >/dev/null
+expect_error "image of no cube map layout" "no cube map layout" --env odd.png --size 64x48 --out x.png
+printf 'not an image\n' >garbage.png
+expect_error "corrupt environment image" "Cannot read environment image" --env garbage.png --size 64x48 --out x.png
 
 expect_error "unknown option" "unknown argument" --frobnicate
 expect_error "missing value" "needs a value" --model
