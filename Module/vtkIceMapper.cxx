@@ -15,6 +15,7 @@
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkClipPolyData.h"
+#include "vtkDoubleArray.h"
 #include "vtkImplicitPolyDataDistance.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
@@ -22,9 +23,11 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLTexture.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSelectEnclosedPoints.h"
 #include "vtkShaderProgram.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
@@ -33,6 +36,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 vtkStandardNewMacro(vtkIceMapper);
@@ -64,6 +68,7 @@ public:
     property->SetSpecularPower(40.0);
     property->SetSpecularColor(1.0, 1.0, 1.0);
     this->Actor->SetMapper(this->Mapper);
+    this->Mapper->ScalarVisibilityOff();
   }
 
   vtkPolyData* Update(vtkPolyData* ice, int number, int seed, int clipping)
@@ -141,14 +146,33 @@ private:
     {
       return append->GetOutput();
     }
+    // Signed distance to the ice surface, negative inside. The sign comes from ray casting
+    // (vtkSelectEnclosedPoints): vtkImplicitPolyDataDistance's own sign is wrong for some points
+    // near edges of concave meshes. The clip interpolates the zero crossing along crack edges.
+    vtkPolyData* cracks = append->GetOutput();
+    vtkNew<vtkSelectEnclosedPoints> enclosed;
+    enclosed->SetInputData(cracks);
+    enclosed->SetSurfaceData(ice);
+    enclosed->Update();
     vtkNew<vtkImplicitPolyDataDistance> distance;
     distance->SetInput(ice);
+    vtkNew<vtkDoubleArray> signedDistance;
+    signedDistance->SetName("vtkIceCrackDistance");
+    signedDistance->SetNumberOfTuples(cracks->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < cracks->GetNumberOfPoints(); ++i)
+    {
+      const double magnitude = std::abs(distance->EvaluateFunction(cracks->GetPoint(i)));
+      signedDistance->SetValue(i, enclosed->IsInside(i) ? -magnitude : magnitude);
+    }
+    vtkNew<vtkPolyData> measured;
+    measured->ShallowCopy(cracks);
+    measured->GetPointData()->SetScalars(signedDistance);
     vtkNew<vtkClipPolyData> clip;
-    clip->SetInputConnection(append->GetOutputPort());
-    clip->SetClipFunction(distance);
+    clip->SetInputData(measured);
     clip->InsideOutOn(); // keep negative distances: inside the ice
     clip->SetValue(0.0);
     clip->Update();
+    clip->GetOutput()->GetPointData()->RemoveArray("vtkIceCrackDistance");
     return clip->GetOutput();
   }
 };
