@@ -139,8 +139,8 @@ std::map<std::string, Display>& Displays()
 
 // Creates a context on `display` (initialising it first if needed), makes it current and checks
 // the OpenGL version.
-std::unique_ptr<EGLContextImpl> TryDisplay(
-  PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay, const Candidate& candidate, std::string& error)
+std::unique_ptr<EGLContextImpl> TryDisplay(PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay,
+  const Candidate& candidate, std::string& error)
 {
   auto known = Displays().find(candidate.Name);
   Display display;
@@ -164,7 +164,8 @@ std::unique_ptr<EGLContextImpl> TryDisplay(
       error = candidate.Name + ": eglInitialize failed (" + ErrorName(eglGetError()) + ")";
       return nullptr;
     }
-    if (!HasExtension(eglQueryString(display.Handle, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
+    if (!HasExtension(
+          eglQueryString(display.Handle, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context"))
     {
       error = candidate.Name + ": no EGL_KHR_surfaceless_context";
       return nullptr;
@@ -173,8 +174,7 @@ std::unique_ptr<EGLContextImpl> TryDisplay(
       EGL_OPENGL_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
       EGL_NONE };
     EGLint count = 0;
-    if (!eglChooseConfig(display.Handle, configAttributes, &display.Config, 1, &count) ||
-      count < 1)
+    if (!eglChooseConfig(display.Handle, configAttributes, &display.Config, 1, &count) || count < 1)
     {
       error = candidate.Name + ": no RGBA8 desktop OpenGL config";
       return nullptr;
@@ -240,8 +240,8 @@ std::unique_ptr<Context> CreateEGLContext(std::string& error)
   std::vector<EGLDeviceEXT> devices;
   auto queryDevices =
     reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-  auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
-    eglGetProcAddress("eglQueryDeviceStringEXT"));
+  auto queryDeviceString =
+    reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
   EGLint deviceCount = 0;
   if (HasExtension(clientExtensions, "EGL_EXT_platform_device") && queryDevices &&
     queryDeviceString && queryDevices(0, nullptr, &deviceCount) && deviceCount > 0)
@@ -265,7 +265,8 @@ std::unique_ptr<Context> CreateEGLContext(std::string& error)
     return Candidate{ name, EGL_PLATFORM_DEVICE_EXT, devices[index] };
   };
   auto isSoftware = [&](int index) {
-    return HasExtension(queryDeviceString(devices[index], EGL_EXTENSIONS), "EGL_MESA_device_software");
+    return HasExtension(
+      queryDeviceString(devices[index], EGL_EXTENSIONS), "EGL_MESA_device_software");
   };
 
   std::vector<Candidate> candidates;
@@ -299,8 +300,8 @@ std::unique_ptr<Context> CreateEGLContext(std::string& error)
     }
     if (HasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
     {
-      candidates.push_back(Candidate{ "EGL surfaceless Mesa platform",
-        EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY });
+      candidates.push_back(Candidate{
+        "EGL surfaceless Mesa platform", EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY });
     }
     for (int i = 0; i < static_cast<int>(devices.size()); ++i)
     {

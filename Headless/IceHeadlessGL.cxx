@@ -19,6 +19,7 @@
 #include <atomic>
 #include <cstring>
 
+// clang-format off
 #define ICE_GL_FUNCTIONS(F)                                                                    \
   F(void, glBindTexture, (GLenum a, GLuint b), (a, b))                                         \
   F(void, glClear, (GLbitfield a), (a))                                                        \
@@ -69,6 +70,7 @@
   F(void, glTexParameterfv, (GLenum a, GLenum b, const GLfloat* c), (a, b, c))                 \
   F(void, glTexParameteri, (GLenum a, GLenum b, GLint c), (a, b, c))                           \
   F(void, glViewport, (GLint a, GLint b, GLsizei c, GLsizei d), (a, b, c, d))
+// clang-format on
 
 namespace
 {
@@ -151,10 +153,10 @@ void Anchor() {}
 
 extern "C"
 {
-#define ICE_GL_DEFINE(type, name, parameters, arguments)                                       \
-  __attribute__((visibility("default"))) type name parameters                                  \
-  {                                                                                            \
-    return reinterpret_cast<type(*) parameters>(Target(Index_##name)) arguments;               \
+#define ICE_GL_DEFINE(type, name, parameters, arguments)                                           \
+  __attribute__((visibility("default"))) type name parameters                                      \
+  {                                                                                                \
+    return reinterpret_cast<type(*) parameters>(Target(Index_##name)) arguments;                   \
   }
   ICE_GL_FUNCTIONS(ICE_GL_DEFINE)
 #undef ICE_GL_DEFINE

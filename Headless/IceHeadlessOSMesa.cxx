@@ -132,8 +132,8 @@ std::unique_ptr<Context> CreateOSMesaContext(std::string& error)
   {
     return nullptr;
   }
-  const int attributes[] = { OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
-    OSMESA_STENCIL_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
+  const int attributes[] = { OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS,
+    0, OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
     OSMESA_CONTEXT_MINOR_VERSION, 2, 0 };
   OSMesaContext handle = library->CreateContextAttribs(attributes, nullptr);
   if (!handle)

@@ -111,8 +111,8 @@ void vtkIceHeadlessRenderWindow::OpenGLInitContext()
 
     GLfloat range[2] = { 1.0f, 1.0f };
     this->MaximumHardwareLineWidth = 1.0f;
-    glGetFloatv(this->LineSmoothing ? GL_SMOOTH_LINE_WIDTH_RANGE : GL_ALIASED_LINE_WIDTH_RANGE,
-      range);
+    glGetFloatv(
+      this->LineSmoothing ? GL_SMOOTH_LINE_WIDTH_RANGE : GL_ALIASED_LINE_WIDTH_RANGE, range);
     if (glGetError() == GL_NO_ERROR)
     {
       this->MaximumHardwareLineWidth = range[1];

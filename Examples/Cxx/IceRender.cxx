@@ -164,7 +164,8 @@ int main(int argc, char* argv[])
   const char* backend = IceHeadless::BackendName(IceHeadless::Installed());
   if (options.Interactive && IceHeadless::Installed() != IceHeadless::Backend::X)
   {
-    return Fail(std::string("--interactive needs the x back end (an X display), not ") + backend, 1);
+    return Fail(
+      std::string("--interactive needs the x back end (an X display), not ") + backend, 1);
   }
 
   vtkNew<vtkRenderer> renderer;

@@ -23,8 +23,8 @@ inline bool IceTestSelectBackend()
     std::cerr << "IceCxxTests: " << error << "\n";
     return false;
   }
-  std::cout << "IceCxxTests: VTKICE_BACKEND=" << name << ", "
-            << IceHeadless::InstalledDescription() << "\n";
+  std::cout << "IceCxxTests: VTKICE_BACKEND=" << name << ", " << IceHeadless::InstalledDescription()
+            << "\n";
   return true;
 }
 

@@ -160,8 +160,8 @@ int TestIceBackend(int argc, char* argv[])
   window->Render();
   const bool resized =
     small.Width == 211 && small.Height == 157 && Same(IceTest::Capture(window), withIce);
-  std::cout << (resized ? "ok   " : "FAIL ") << "resized to " << small.Width << "x"
-            << small.Height << " and back to 400x300: the same picture\n";
+  std::cout << (resized ? "ok   " : "FAIL ") << "resized to " << small.Width << "x" << small.Height
+            << " and back to 400x300: the same picture\n";
   ok = resized && ok;
 
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -63,8 +63,8 @@ int TestIceBackendUnavailable(int, char*[])
     window->Render();
     const bool once = messages->Errors.size() == 1 && window->SupportsOpenGL() == 0 &&
       !window->IsCurrent() && messages->Errors.size() == 1;
-    std::cout << (once ? "ok   " : "FAIL ") << "window on an unavailable back end: "
-              << messages->Errors.size() << " error(s)\n";
+    std::cout << (once ? "ok   " : "FAIL ")
+              << "window on an unavailable back end: " << messages->Errors.size() << " error(s)\n";
     ok = once && ok;
     ok = Expect("its error", messages->Errors.empty() ? "" : messages->Errors[0],
            "egl back end unavailable: EGL device 99 does not exist") &&
