@@ -2,7 +2,9 @@
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
-# Rendering needs an X server: without a working DISPLAY the commands run under Xvfb.
+# ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
+# The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
+# run again through EGL with no DISPLAY at all (Documentation/headless.md).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -30,11 +32,16 @@ command=${1:-}
 case "$command" in
   render)
     build
-    with_display "$build_dir/bin/ice-render" "$@"
+    "$build_dir/bin/ice-render" "$@"
     ;;
   test)
     build
-    with_display ctest --test-dir "$build_dir" --output-on-failure "$@"
+    status=0
+    with_display ctest --test-dir "$build_dir" --output-on-failure "$@" || status=1
+    echo "== Again through EGL without an X server (VTKICE_BACKEND=egl, tests labelled backend)"
+    env -u DISPLAY VTKICE_BACKEND=egl \
+      ctest --test-dir "$build_dir" --output-on-failure -L backend "$@" || status=1
+    exit "$status"
     ;;
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" >&2

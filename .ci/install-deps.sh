@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Installs the Debian packages VTK Ice needs to build, test and render headless.
+# Installs the Debian packages VTK Ice needs to build, test and render headless
+# (Xvfb for the X tests; Mesa EGL and OSMesa for rendering without X).
 # Skips apt-get entirely when every package is already installed.
 set -euo pipefail
 packages=(
   libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config
   libglm-dev libopenimageio-dev
-  xvfb xauth libgl1-mesa-dri libegl-dev
+  xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
 )
 missing=()
 for p in "${packages[@]}"; do

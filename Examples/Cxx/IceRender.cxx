@@ -1,4 +1,5 @@
 // ice-render: renders a model as ice in front of an environment, to a PNG or in a window.
+#include "IceHeadless.h"
 #include "IceScene.h"
 
 #include "vtkActor.h"
@@ -23,6 +24,7 @@ namespace
 const char* const Usage =
   "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|PATH] [--size WxH]\n"
   "                  [--out FILE] [--one-sided] [--static] [--interactive]\n"
+  "                  [--backend auto|x|egl|osmesa]\n"
   "Renders a model as ice (default: the teapot in a small landscape) to ice.png.\n"
   "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
   "  --env    sky, test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
@@ -31,13 +33,16 @@ const char* const Usage =
   "  --out    output PNG, default ice.png\n"
   "  --one-sided  refract at the front face only (the default blends in the back face)\n"
   "  --static     no landscape and no dynamic cube map: the ice sees the environment map only\n"
-  "  --interactive  open a window with a trackball camera instead of writing a file\n";
+  "  --interactive  open a window with a trackball camera instead of writing a file\n"
+  "  --backend  x (X display), egl or osmesa (no X needed); default $VTKICE_BACKEND or auto:\n"
+  "             x when DISPLAY works, else egl, else osmesa\n";
 
 struct Options
 {
   std::string Model = "teapot";
   std::string Environment = "sky";
   std::string Output = "ice.png";
+  std::string Backend; // empty: $VTKICE_BACKEND, else auto
   int Width = 1024;
   int Height = 768;
   bool Interactive = false;
@@ -91,7 +96,8 @@ int Parse(int argc, char* argv[], Options& options)
     {
       options.Static = true;
     }
-    else if (arg == "--model" || arg == "--env" || arg == "--out" || arg == "--size")
+    else if (arg == "--model" || arg == "--env" || arg == "--out" || arg == "--size" ||
+      arg == "--backend")
     {
       if (!value(text))
       {
@@ -108,6 +114,15 @@ int Parse(int argc, char* argv[], Options& options)
       else if (arg == "--out")
       {
         options.Output = text;
+      }
+      else if (arg == "--backend")
+      {
+        IceHeadless::Backend backend;
+        if (!IceHeadless::ParseBackend(text, backend))
+        {
+          return Fail("bad --backend '" + text + "' (expected auto, x, egl or osmesa)", 2);
+        }
+        options.Backend = text;
       }
       else if (!ParseSize(text, options.Width, options.Height))
       {
@@ -148,6 +163,19 @@ int main(int argc, char* argv[])
     return Fail("cannot write '" + options.Output + "'", 1);
   }
 
+  // Every vtkRenderWindow from here on renders through the chosen back end.
+  const std::string backendError = IceHeadless::Install(options.Backend);
+  if (!backendError.empty())
+  {
+    return Fail(backendError, 1);
+  }
+  const char* backend = IceHeadless::BackendName(IceHeadless::Installed());
+  if (options.Interactive && IceHeadless::Installed() != IceHeadless::Backend::X)
+  {
+    return Fail(
+      std::string("--interactive needs the x back end (an X display), not ") + backend, 1);
+  }
+
   vtkNew<vtkRenderer> renderer;
   IceScene::Options sceneOptions;
   sceneOptions.Landscape = !options.Static;
@@ -180,6 +208,6 @@ int main(int argc, char* argv[])
   writer->SetInputConnection(grab->GetOutputPort());
   writer->Write();
   std::cout << "ice-render: wrote " << options.Output << " (" << options.Width << "x"
-            << options.Height << ", model " << options.Model << ")\n";
+            << options.Height << ", model " << options.Model << ", back end " << backend << ")\n";
   return 0;
 }

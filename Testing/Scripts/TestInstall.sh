@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `cmake --install` to a prefix, then use that prefix as users would: import vtkice with
-# Debian's Python, and build and run a project that calls find_package(VTKIce).
+# Debian's Python, build and run a project that calls find_package(VTKIce) (with
+# VTKIce::Headless), and run the installed ice-render without X.
 # usage: TestInstall.sh BUILD_DIR SOURCE_DIR WORK_DIR
 set -eu
 build=$1
@@ -15,4 +16,7 @@ cmake -S "$source/Testing/Install" -B "$work/consumer" -G Ninja \
   -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build "$work/consumer" >/dev/null
 "$work/consumer/ice-consumer"
+env -u DISPLAY "$work/consumer/ice-consumer-headless"
+# The installed ice-render finds libIceHeadless and renders without X.
+env -u DISPLAY "$prefix/bin/ice-render" --size 64x48 --out "$work/installed.png"
 echo "install: all checks passed"
