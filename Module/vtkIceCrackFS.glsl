@@ -6,46 +6,12 @@ uniform int iceCrackDebug;          // 1: solid red, as in the paper's Figure 5
 uniform float iceCrackIntensity;
 uniform float iceBumpStrength;
 uniform float iceBumpFrequency;
-uniform vec4 iceDepthToWindow;      // projection P22, P23, parallel (0/1), unused
 
-float iceHash(vec3 p)
-{
-  p = fract(p * 0.1031 + vec3(0.13, 0.71, 0.37));
-  p += dot(p, p.yzx + 19.19);
-  return fract((p.x + p.y) * p.z);
-}
-
-float iceValueNoise(vec3 x)
-{
-  vec3 i = floor(x);
-  vec3 f = fract(x);
-  f = f * f * (3.0 - 2.0 * f);
-  float a = mix(iceHash(i), iceHash(i + vec3(1, 0, 0)), f.x);
-  float b = mix(iceHash(i + vec3(0, 1, 0)), iceHash(i + vec3(1, 1, 0)), f.x);
-  float c = mix(iceHash(i + vec3(0, 0, 1)), iceHash(i + vec3(1, 0, 1)), f.x);
-  float d = mix(iceHash(i + vec3(0, 1, 1)), iceHash(i + vec3(1, 1, 1)), f.x);
-  return mix(mix(a, b, f.y), mix(c, d, f.y), f.z);
-}
-
-// Window depth of a view depth for the current camera.
-float iceWindowDepth(float viewDepth)
-{
-  float ndc = iceDepthToWindow.z > 0.5 ? -iceDepthToWindow.x * viewDepth + iceDepthToWindow.y
-                                        : (iceDepthToWindow.y - iceDepthToWindow.x * viewDepth) / viewDepth;
-  return 0.5 * ndc + 0.5;
-}
 //ICE::Normal
   {
     // Bump mapping: tilt the normal by the gradient of a noise field fixed to the crack.
-    vec3 p = iceCrackMC * iceBumpFrequency;
-    const float h = 0.05;
-    vec3 gradient = vec3(
-      iceValueNoise(p + vec3(h, 0, 0)) - iceValueNoise(p - vec3(h, 0, 0)),
-      iceValueNoise(p + vec3(0, h, 0)) - iceValueNoise(p - vec3(0, h, 0)),
-      iceValueNoise(p + vec3(0, 0, h)) - iceValueNoise(p - vec3(0, 0, h))) / (2.0 * h);
-    vec3 gradientVC = normalMatrix * gradient;
-    gradientVC -= dot(gradientVC, normalVCVSOutput) * normalVCVSOutput;
-    normalVCVSOutput = normalize(normalVCVSOutput - iceBumpStrength * gradientVC);
+    vec3 gradientVC = normalMatrix * iceNoiseGradient(iceCrackMC * iceBumpFrequency);
+    normalVCVSOutput = iceBumpNormal(normalVCVSOutput, gradientVC, iceBumpStrength);
   }
 //ICE::Impl
   {

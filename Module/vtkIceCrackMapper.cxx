@@ -2,10 +2,9 @@
 
 #include "vtkIceCrackFS.h"
 #include "vtkIceCrackVS.h"
+#include "vtkIceValueNoise.h"
 #include "vtkIceShaderSections.h"
 
-#include "vtkCamera.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -42,8 +41,8 @@ void vtkIceCrackMapper::ReplaceIceShaderValues(
     vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceCrackVS, "Dec")));
   vtkShaderProgram::Substitute(
     vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceCrackVS, "Impl")));
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceCrackFS, "Dec")));
+  vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec",
+    AfterTag("//VTK::Normal::Dec", Get(vtkIceValueNoise, "Dec") + Get(vtkIceCrackFS, "Dec")));
   vtkShaderProgram::Substitute(
     fs, "//VTK::Normal::Impl", AfterTag("//VTK::Normal::Impl", Get(vtkIceCrackFS, "Normal")));
   vtkShaderProgram::Substitute(
@@ -63,15 +62,6 @@ void vtkIceCrackMapper::SetIceShaderParameters(
   program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Intensity));
   program->SetUniformf("iceBumpStrength", static_cast<float>(this->BumpStrength));
   program->SetUniformf("iceBumpFrequency", static_cast<float>(this->BumpFrequency));
-
-  vtkCamera* camera = ren->GetActiveCamera();
-  // Not GetProjectionTransformMatrix(ren): that one is transposed and must be deleted.
-  vtkMatrix4x4* projection =
-    camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0);
-  const float depthToWindow[4] = { static_cast<float>(projection->GetElement(2, 2)),
-    static_cast<float>(projection->GetElement(2, 3)),
-    camera->GetParallelProjection() ? 1.0f : 0.0f, 0.0f };
-  program->SetUniform4f("iceDepthToWindow", depthToWindow);
 }
 
 //------------------------------------------------------------------------------

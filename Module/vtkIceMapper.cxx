@@ -1,5 +1,8 @@
 #include "vtkIceMapper.h"
 
+#include "vtkIceAirMapper.h"
+#include "vtkIceAirTextureSource.h"
+#include "vtkIceBumpFS.h"
 #include "vtkIceCrackMapper.h"
 #include "vtkIceCrackSource.h"
 #include "vtkIceCubeMapPass.h"
@@ -10,10 +13,18 @@
 #include "vtkIceShaderSections.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
+#include "vtkIceNormalMapFS.h"
 #include "vtkIceTwoSidedFS.h"
+#include "vtkIceValueNoise.h"
 
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPoints.h"
 #include "vtkClipPolyData.h"
 #include "vtkDoubleArray.h"
 #include "vtkImplicitPolyDataDistance.h"
@@ -36,6 +47,8 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <numeric>
+#include <vector>
 #include <cmath>
 #include <cstdint>
 
@@ -46,8 +59,58 @@ namespace
 enum ShaderParts
 {
   TwoSidedPart = 1,
-  DepthDebugPart = 2
+  DepthDebugPart = 2,
+  BumpPart = 4,
+  NormalMapPart = 8
 };
+
+enum class Overlay
+{
+  Add,   // highlights: additive
+  Blend, // bubbles: alpha blending
+  Opaque // debug colours
+};
+
+// Draws `mapper` with `actor` over the rendered scene: the fragment shaders test their fragments
+// at the ice's front depth, so the depth test keeps them where the ice is seen; no depth writes.
+void DrawOverScene(vtkRenderer* ren, vtkMapper* mapper, vtkActor* actor, Overlay overlay, bool depthTest)
+{
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  state->vtkglDisable(GL_CULL_FACE);
+  if (overlay == Overlay::Opaque)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    state->vtkglEnable(GL_BLEND);
+    if (overlay == Overlay::Add)
+    {
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+    }
+    else
+    {
+      state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    }
+  }
+  if (depthTest)
+  {
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LEQUAL);
+  }
+  else
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+  }
+  state->vtkglDepthMask(GL_FALSE);
+  mapper->Render(ren, actor);
+}
 const int GenericCrackModels = 3;
 }
 
@@ -177,6 +240,153 @@ private:
   }
 };
 
+// The air planes of one ice mapper: their geometry (cached), back-to-front order and what draws
+// them.
+class vtkIceMapper::vtkAir
+{
+public:
+  vtkNew<vtkIceAirMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkSmartPointer<vtkPolyData> Geometry;
+
+  vtkAir()
+  {
+    this->Actor->GetProperty()->LightingOff();
+    this->Actor->SetMapper(this->Mapper);
+    this->Mapper->ScalarVisibilityOff();
+  }
+
+  vtkPolyData* Update(vtkPolyData* ice, int number, int seed)
+  {
+    const bool current = this->Geometry && ice == this->Ice && ice->GetMTime() == this->IceTime &&
+      number == this->Number && seed == this->Seed;
+    if (!current)
+    {
+      this->Ice = ice;
+      this->IceTime = ice->GetMTime();
+      this->Number = number;
+      this->Seed = seed;
+      this->Build(ice, number, seed);
+      this->Mapper->SetInputData(this->Geometry);
+    }
+    if (!this->Texture || seed != this->TextureSeed)
+    {
+      vtkNew<vtkIceAirTextureSource> images;
+      images->SetSeed(seed);
+      images->Update();
+      this->Texture = vtkSmartPointer<vtkTexture>::New();
+      this->Texture->SetInputData(images->GetOutput());
+      this->Texture->InterpolateOn();
+      this->Texture->MipmapOn();
+      this->Texture->RepeatOff();
+      this->Texture->EdgeClampOn();
+      this->Texture->SetColorModeToDirectScalars();
+      this->Mapper->SetAirTexture(this->Texture);
+      this->TextureSeed = seed;
+    }
+    return this->Geometry;
+  }
+
+  // Reorders the planes back to front as seen from `eye` (model coordinates).
+  void Sort(const double eye[3])
+  {
+    const vtkIdType n = static_cast<vtkIdType>(this->Centers.size() / 3);
+    std::vector<vtkIdType> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::vector<double> distance(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      distance[i] = vtkMath::Distance2BetweenPoints(&this->Centers[3 * i], eye);
+    }
+    std::stable_sort(order.begin(), order.end(),
+      [&distance](vtkIdType a, vtkIdType b) { return distance[a] > distance[b]; });
+    if (order == this->Order)
+    {
+      return;
+    }
+    this->Order = order;
+    vtkNew<vtkCellArray> quads;
+    for (vtkIdType i : order)
+    {
+      const vtkIdType quad[4] = { 4 * i, 4 * i + 1, 4 * i + 2, 4 * i + 3 };
+      quads->InsertNextCell(4, quad);
+    }
+    this->Geometry->SetPolys(quads);
+  }
+
+private:
+  vtkPolyData* Ice = nullptr;
+  vtkMTimeType IceTime = 0;
+  int Number = -1;
+  int Seed = 0;
+  int TextureSeed = 0;
+  vtkSmartPointer<vtkTexture> Texture;
+  std::vector<double> Centers;
+  std::vector<vtkIdType> Order;
+
+  void Build(vtkPolyData* ice, int number, int seed)
+  {
+    double bounds[6];
+    ice->GetBounds(bounds);
+    const double size[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+    const double extent = std::max({ size[0], size[1], size[2] });
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkFloatArray> uv;
+    uv->SetName("vtkIceAirUV");
+    uv->SetNumberOfComponents(2);
+    vtkNew<vtkFloatArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    this->Centers.clear();
+    this->Order.clear();
+    const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 6151U + 7U;
+    for (int i = 0; i < number; ++i)
+    {
+      double u[7];
+      for (int k = 0; k < 7; ++k)
+      {
+        u[k] = vtkIceNoise::Uniform(sequence, static_cast<std::uint32_t>(7 * i + k));
+      }
+      // A random orientation and a position in the middle 40 % of the bounds.
+      const double z = 2.0 * u[0] - 1.0;
+      const double phi = 2.0 * vtkMath::Pi() * u[1];
+      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      double center[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        center[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]) + 0.4 * (u[3 + c] - 0.5) * size[c];
+      }
+      vtkNew<vtkTransform> place;
+      place->Translate(center);
+      place->RotateWXYZ(360.0 * u[2], r * std::cos(phi), r * std::sin(phi), z);
+      const double half = extent * (0.2 + 0.2 * u[6]);
+      place->Scale(half, half, half);
+      // Each plane shows one tile of the 2 x 2 atlas, inset against bleeding.
+      const double tileU = 0.5 * (i % 2);
+      const double tileV = 0.5 * ((i / 2) % 2);
+      const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+      for (const auto& corner : corners)
+      {
+        double p[3] = { corner[0], corner[1], 0.0 };
+        place->TransformPoint(p, p);
+        points->InsertNextPoint(p);
+        uv->InsertNextTuple2(tileU + 0.01 + 0.24 * (corner[0] + 1.0), tileV + 0.01 + 0.24 * (corner[1] + 1.0));
+        double n[3] = { 0.0, 0.0, 1.0 };
+        place->TransformNormal(n, n);
+        vtkMath::Normalize(n);
+        normals->InsertNextTuple(n);
+      }
+      this->Centers.insert(this->Centers.end(), center, center + 3);
+    }
+    this->Geometry = vtkSmartPointer<vtkPolyData>::New();
+    this->Geometry->SetPoints(points);
+    this->Geometry->GetPointData()->AddArray(uv);
+    this->Geometry->GetPointData()->SetNormals(normals);
+    const double far[3] = { 0.0, 0.0, 0.0 };
+    this->Sort(far);
+  }
+};
+
 //------------------------------------------------------------------------------
 vtkIceMapper::vtkIceMapper()
   : RefractionRatio(1.0003 / 1.3091)
@@ -184,6 +394,7 @@ vtkIceMapper::vtkIceMapper()
   , BackNormalWeight(0.33)
   , IceColor{ 1.0, 1.0, 1.0 }
   , Cracks(new vtkCracks)
+  , Air(new vtkAir)
 {
 }
 
@@ -191,6 +402,32 @@ vtkIceMapper::vtkIceMapper()
 vtkIceMapper::~vtkIceMapper()
 {
   delete this->Cracks;
+  delete this->Air;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetNormalMap(vtkTexture* texture)
+{
+  if (this->NormalMap != texture)
+  {
+    this->NormalMap = texture;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkTexture* vtkIceMapper::GetNormalMap()
+{
+  return this->NormalMap;
+}
+
+//------------------------------------------------------------------------------
+double vtkIceMapper::InputExtent()
+{
+  double bounds[6];
+  this->PreparedInput->GetBounds(bounds);
+  return std::max(
+    { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-12 });
 }
 
 //------------------------------------------------------------------------------
@@ -237,6 +474,10 @@ int vtkIceMapper::ShaderVariant() const
     this->DepthIntervalTexture)
   {
     variant |= DepthDebugPart;
+  }
+  if (this->BumpStrength > 0.0)
+  {
+    variant |= this->NormalMap ? NormalMapPart : BumpPart;
   }
   return variant;
 }
@@ -298,6 +539,10 @@ vtkTextureObject* vtkIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
 void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   this->ActiveEnvironmentObject = this->BindEnvironment(ren, act);
+  if (this->NormalMap && this->BumpStrength > 0.0)
+  {
+    this->NormalMap->Render(ren);
+  }
   this->Superclass::RenderPieceStart(ren, act);
 }
 
@@ -305,6 +550,10 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
+  if (this->NormalMap && this->BumpStrength > 0.0)
+  {
+    this->NormalMap->PostRender(ren);
+  }
   if (this->ActiveEnvironment)
   {
     this->ActiveEnvironment->PostRender(ren);
@@ -341,6 +590,14 @@ void vtkIceMapper::ReplaceIceShaderValues(
   {
     declarations += Get(vtkIceDebugDepthFS, "Dec");
   }
+  if (variant & BumpPart)
+  {
+    declarations += Get(vtkIceValueNoise, "Dec") + Get(vtkIceBumpFS, "Dec");
+  }
+  if (variant & NormalMapPart)
+  {
+    declarations += Get(vtkIceNormalMapFS, "Dec");
+  }
   vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", declarations));
   vtkShaderProgram::Substitute(
     fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceSurfaceFS, "Impl")));
@@ -351,6 +608,11 @@ void vtkIceMapper::ReplaceIceShaderValues(
   if (variant & DepthDebugPart)
   {
     vtkShaderProgram::Substitute(fs, "//ICEHOOK::Debug", Get(vtkIceDebugDepthFS, "Impl"));
+  }
+  if (variant & (BumpPart | NormalMapPart))
+  {
+    vtkShaderProgram::Substitute(fs, "//ICEHOOK::SurfaceNormal",
+      Get(variant & BumpPart ? vtkIceBumpFS : vtkIceNormalMapFS, "Impl"));
   }
 }
 
@@ -382,6 +644,16 @@ void vtkIceMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer
     program->SetUniform2f("iceDepthRange", range);
     program->SetUniformi("iceDebugChannel", this->DebugView == DebugFrontDepth ? 0 : 1);
   }
+  if (variant & (BumpPart | NormalMapPart))
+  {
+    program->SetUniformf("iceBumpStrength", static_cast<float>(this->BumpStrength));
+    program->SetUniformf(
+      "iceBumpFrequency", static_cast<float>(1.0 / (this->BumpScale * this->InputExtent())));
+  }
+  if (variant & NormalMapPart)
+  {
+    program->SetUniformi("iceNormalMap", this->NormalMap->GetTextureUnit());
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -409,8 +681,9 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
 {
   const bool debugCracks =
     this->DebugView == DebugCracksUnclipped || this->DebugView == DebugCracksClipped;
-  const bool debugDepth = this->DebugView == DebugFrontDepth || this->DebugView == DebugBackDepth;
-  if (debugDepth || (!overlay && (!this->CracksPerturbRefraction || debugCracks)))
+  const bool otherDebug = this->DebugView == DebugFrontDepth ||
+    this->DebugView == DebugBackDepth || this->DebugView == DebugAir;
+  if (otherDebug || (!overlay && (!this->CracksPerturbRefraction || debugCracks)))
   {
     return;
   }
@@ -419,61 +692,64 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
   {
     return;
   }
-  double bounds[6];
-  this->PreparedInput->GetBounds(bounds);
-  const double extent =
-    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-
   vtkIceCrackMapper* mapper = this->Cracks->Mapper;
   const bool unclipped = this->DebugView == DebugCracksUnclipped;
   mapper->SetDepthIntervalTexture(this->DepthIntervalTexture);
   mapper->SetClipToInterval(this->CrackClipping == DepthInterval && !unclipped);
   mapper->SetDebugColor(debugCracks);
   mapper->SetIntensity(this->CrackIntensity);
-  mapper->SetBumpFrequency(8.0 / std::max(extent, 1e-12));
+  mapper->SetBumpFrequency(8.0 / this->InputExtent());
   vtkActor* crackActor = this->Cracks->Actor;
   crackActor->SetUserMatrix(actor->GetMatrix());
   // Share the ice actor's keys: render passes that hook the ice hook its cracks too.
   crackActor->SetPropertyKeys(actor->GetPropertyKeys());
-
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  state->vtkglDisable(GL_CULL_FACE);
   if (overlay)
   {
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-    if (debugCracks)
-    {
-      state->vtkglDisable(GL_BLEND);
-    }
-    else
-    {
-      // Highlights add light over the ice.
-      state->vtkglEnable(GL_BLEND);
-      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
-    }
-    if (unclipped)
-    {
-      state->vtkglDisable(GL_DEPTH_TEST);
-    }
-    else
-    {
-      state->vtkglEnable(GL_DEPTH_TEST);
-      state->vtkglDepthFunc(GL_LEQUAL);
-    }
-    state->vtkglDepthMask(GL_FALSE);
-    mapper->Render(ren, crackActor);
+    DrawOverScene(ren, mapper, crackActor, debugCracks ? Overlay::Opaque : Overlay::Add, !unclipped);
   }
   else
   {
+    vtkOpenGLState* state =
+      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+    state->vtkglDisable(GL_CULL_FACE);
     mapper->Render(ren, crackActor);
   }
   crackActor->SetPropertyKeys(nullptr);
   ++this->NumberOfCrackDraws;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
+{
+  const bool debugAir = this->DebugView == DebugAir;
+  if (this->NumberOfAirPlanes == 0 || !this->DepthIntervalTexture ||
+    (this->DebugView != DebugOff && !debugAir))
+  {
+    return;
+  }
+  vtkPolyData* input = this->GetInput();
+  if (!input || !this->PrepareInput(input))
+  {
+    return;
+  }
+  this->Air->Update(this->PreparedInput, this->NumberOfAirPlanes, this->AirSeed);
+
+  // Back to front for this camera: the eye in the ice's model coordinates.
+  double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
+  ren->GetActiveCamera()->GetPosition(eye);
+  vtkNew<vtkMatrix4x4> worldToModel;
+  vtkMatrix4x4::Invert(actor->GetMatrix(), worldToModel);
+  worldToModel->MultiplyPoint(eye, eye);
+  this->Air->Sort(eye);
+
+  vtkIceAirMapper* mapper = this->Air->Mapper;
+  mapper->SetDepthIntervalTexture(this->DepthIntervalTexture);
+  mapper->SetMilkiness(this->Milkiness);
+  mapper->SetDebugColor(debugAir);
+  vtkActor* airActor = this->Air->Actor;
+  airActor->SetUserMatrix(actor->GetMatrix());
+  DrawOverScene(ren, mapper, airActor, debugAir ? Overlay::Opaque : Overlay::Blend, true);
 }
 
 //------------------------------------------------------------------------------
@@ -484,6 +760,7 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
     this->FallbackEnvironment->ReleaseGraphicsResources(win);
   }
   this->Cracks->Mapper->ReleaseGraphicsResources(win);
+  this->Air->Mapper->ReleaseGraphicsResources(win);
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
@@ -504,5 +781,11 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval") << "\n";
   os << indent << "CracksPerturbRefraction: " << (this->CracksPerturbRefraction ? "On" : "Off")
      << "\n";
+  os << indent << "NumberOfAirPlanes: " << this->NumberOfAirPlanes << "\n";
+  os << indent << "AirSeed: " << this->AirSeed << "\n";
+  os << indent << "Milkiness: " << this->Milkiness << "\n";
+  os << indent << "BumpStrength: " << this->BumpStrength << "\n";
+  os << indent << "BumpScale: " << this->BumpScale << "\n";
+  os << indent << "NormalMap: " << this->NormalMap.Get() << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
 }

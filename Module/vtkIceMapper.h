@@ -17,7 +17,10 @@
  * BackNormalWeight. Without the pass, or with TwoSidedRefraction off, refraction is one-sided.
  * vtkIcePass also draws the ice's cracks (NumberOfCracks generic crack surfaces placed at random
  * inside, showing only their specular highlights), clipped to the ice either per fragment by its
- * depth interval or once on the CPU (CrackClipping).
+ * depth interval or once on the CPU (CrackClipping), and its air: NumberOfAirPlanes planes of
+ * bubble images that make the ice milky (Milkiness). BumpStrength and BumpScale make the surface
+ * bumpy. Air, cracks and bumps are on by default (the paper's full look); set them to 0 for clean
+ * optics.
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn.
@@ -139,20 +142,69 @@ public:
   vtkBooleanMacro(CracksPerturbRefraction, bool);
   ///@}
 
+  ///@{
+  /**
+   * Number of air-bubble planes inside the ice (drawn by vtkIcePass, alpha blended, back to
+   * front, clipped to the ice). Default 19, as in the paper's measurements; clamped to
+   * [0, 1000]. 0 turns the air off.
+   */
+  vtkSetClampMacro(NumberOfAirPlanes, int, 0, 1000);
+  vtkGetMacro(NumberOfAirPlanes, int);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the air planes' positions, orientations and images. Default 1.
+   */
+  vtkSetMacro(AirSeed, int);
+  vtkGetMacro(AirSeed, int);
+  ///@}
+
+  ///@{
+  /**
+   * How white and cloudy the air makes the ice: 0 sparse clear bubbles, 1 milky. Default 0.5.
+   */
+  vtkSetClampMacro(Milkiness, double, 0.0, 1.0);
+  vtkGetMacro(Milkiness, double);
+  ///@}
+
+  ///@{
+  /**
+   * A bumpy surface: how far the normal tilts (0 = smooth, the paper's clean optics) and the size
+   * of a bump as a fraction of the ice's largest extent. The bumps are fixed to the model, so they
+   * do not swim when the camera moves, and they drive reflection, refraction and Fresnel.
+   * Defaults 0.08 and 0.15.
+   */
+  vtkSetClampMacro(BumpStrength, double, 0.0, 10.0);
+  vtkGetMacro(BumpStrength, double);
+  vtkSetClampMacro(BumpScale, double, 1.0e-4, 100.0);
+  vtkGetMacro(BumpScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * A tangent-space normal map (RGB, repeat on) used instead of the procedural bumps, projected
+   * on the three model planes; BumpStrength scales it and BumpScale is the size of one repeat.
+   */
+  void SetNormalMap(vtkTexture* texture);
+  vtkTexture* GetNormalMap();
+  ///@}
+
   enum DebugViews
   {
     DebugOff = 0,
     DebugFrontDepth = 1,      // the ice's front depth (near black, far white)
     DebugBackDepth = 2,       // the ice's back depth
     DebugCracksUnclipped = 3, // cracks in red, not clipped, over everything
-    DebugCracksClipped = 4    // cracks in red, clipped
+    DebugCracksClipped = 4,   // cracks in red, clipped
+    DebugAir = 5              // air bubbles in green
   };
 
   ///@{
   /**
    * The paper's Figure 5 views. Default DebugOff.
    */
-  vtkSetClampMacro(DebugView, int, DebugOff, DebugCracksClipped);
+  vtkSetClampMacro(DebugView, int, DebugOff, DebugAir);
   vtkGetMacro(DebugView, int);
   ///@}
 
@@ -168,6 +220,12 @@ public:
    * additive blending; otherwise with the current state (into the back-face normal texture).
    */
   void RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
+
+  /**
+   * Draws the air planes of `actor` over the rendered scene (vtkIcePass calls it), sorted back to
+   * front for the current camera.
+   */
+  void RenderAir(vtkRenderer* ren, vtkActor* actor);
 
   /**
    * Number of crack draw calls since creation (one per RenderCracks with cracks).
@@ -232,6 +290,12 @@ protected:
   int CrackClipping = DepthInterval;
   bool CracksPerturbRefraction = false;
   int DebugView = DebugOff;
+  int NumberOfAirPlanes = 19;
+  int AirSeed = 1;
+  double Milkiness = 0.5;
+  double BumpStrength = 0.08;
+  double BumpScale = 0.15;
+  vtkSmartPointer<vtkTexture> NormalMap;
   double DepthRange[2] = { 0.0, 1.0 };
   vtkIdType NumberOfCrackDraws = 0;
 
@@ -244,8 +308,13 @@ protected:
   vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples
   bool WarnedNoEnvironment = false;
 
+  // The largest extent of the prepared input's bounds.
+  double InputExtent();
+
   class vtkCracks;
   vtkCracks* Cracks;
+  class vtkAir;
+  vtkAir* Air;
 
 private:
   vtkIceMapper(const vtkIceMapper&) = delete;

@@ -158,6 +158,12 @@ void vtkIcePass::RenderCracks(const vtkRenderState* s, const vtkRenderState* ice
   }
   state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
   state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
+  // Air first (blended back to front), then the cracks' highlights added on top.
+  for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = iceState->GetPropArray()[i];
+    vtkIceMapper::GetIceMapperOf(prop)->RenderAir(renderer, static_cast<vtkActor*>(prop));
+  }
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];

@@ -16,8 +16,9 @@
  *    is used (static environment),
  * 2. depth interval (vtkIceDepthIntervalPass: front and back depth of the ice, for the cracks),
  * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
- * After the delegate it draws the ice mappers' cracks over the scene, clipped to the ice: one
- * draw per ice prop however many cracks it has.
+ * After the delegate it draws the ice mappers' air planes (blended back to front) and cracks
+ * (highlights added) over the scene, clipped to the ice: one draw each per ice prop however many
+ * planes and cracks it has.
  *
  * @sa vtkIceMapper vtkIceBackfaceNormalPass
  */
@@ -76,7 +77,7 @@ protected:
   // Matches the default delegate's translucent pass to the renderer's depth-peeling setting.
   void ConfigureDefaultDelegate(vtkRenderer* renderer);
 
-  // Draws the ice props' cracks over the rendered scene.
+  // Draws the ice props' air and cracks over the rendered scene.
   void RenderCracks(const vtkRenderState* s, const vtkRenderState* iceState);
 
   vtkRenderPass* DelegatePass = nullptr;

@@ -8,11 +8,13 @@ uniform vec3 iceTint;
     vec3 e = normalize(icePositionWC - iceCameraWC);
     vec3 nFront = normalize(iceNormalWC);
     if (gl_FrontFacing == false) { nFront = -nFront; }
+    float fresnel = iceFresnelFactor;
+    //ICEHOOK::SurfaceNormal
     vec3 nRefract = nFront;
     //ICEHOOK::RefractionNormal
     vec3 refracted = texture(iceEnvironment, iceRefract(e, nRefract, iceRefractionRatio)).rgb;
     vec3 reflected = texture(iceEnvironment, iceReflect(e, nFront)).rgb;
-    gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(iceFresnelFactor, 0.0, 1.0));
+    gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(fresnel, 0.0, 1.0));
     //ICEHOOK::Debug
   }
   //ICEHOOK::Output

@@ -1,6 +1,9 @@
 //ICE::Dec
 in vec3 icePositionWC;
 in vec3 iceNormalWC;
+in vec3 icePositionMC;   // model coordinates: stable under camera and actor motion
+in vec3 iceNormalModel;
+uniform mat3 iceNormalMCWCMatrix;
 uniform vec3 iceCameraWC;
 uniform vec3 iceViewDirectionWC; // unit direction of projection
 uniform ivec2 iceViewportOrigin; // window position of texel (0, 0) of viewport-sized textures
@@ -9,6 +12,16 @@ uniform ivec2 iceViewportOrigin; // window position of texel (0, 0) of viewport-
 float iceViewDepth()
 {
   return dot(icePositionWC - iceCameraWC, iceViewDirectionWC);
+}
+
+uniform vec4 iceDepthToWindow; // the camera projection's P22, P23, parallel (0/1), unused
+
+// Window depth of a view depth for the current camera.
+float iceWindowDepth(float viewDepth)
+{
+  float ndc = iceDepthToWindow.z > 0.5 ? -iceDepthToWindow.x * viewDepth + iceDepthToWindow.y
+                                        : (iceDepthToWindow.y - iceDepthToWindow.x * viewDepth) / viewDepth;
+  return 0.5 * ndc + 0.5;
 }
 
 // Texel of a viewport-sized texture under this fragment.

@@ -210,6 +210,7 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
   {
     mcwc->DeepCopy(this->VBOShiftScale);
   }
+  program->SetUniformMatrix("iceVBOToModelMatrix", mcwc);
   if (!act->GetIsIdentity())
   {
     vtkMatrix4x4* actorMCWC;
@@ -230,6 +231,14 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
     static_cast<float>(direction[1]), static_cast<float>(direction[2]) };
   program->SetUniform3f("iceCameraWC", eyeWC);
   program->SetUniform3f("iceViewDirectionWC", directionWC);
+
+  // Not GetProjectionTransformMatrix(ren): that one is transposed and must be deleted.
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0);
+  const float depthToWindow[4] = { static_cast<float>(projection->GetElement(2, 2)),
+    static_cast<float>(projection->GetElement(2, 3)),
+    camera->GetParallelProjection() ? 1.0f : 0.0f, 0.0f };
+  program->SetUniform4f("iceDepthToWindow", depthToWindow);
 
   this->SetIceShaderParameters(program, ren, act);
 }

@@ -2,9 +2,14 @@
 in vec3 iceNormalMC;
 uniform mat4 iceMCWCMatrix;       // model (VBO shift/scale included) to world
 uniform mat3 iceNormalMCWCMatrix; // model to world for normals
+uniform mat4 iceVBOToModelMatrix; // undoes the VBO shift/scale: true model coordinates
 uniform vec3 iceCameraWC;
 out vec3 icePositionWC;
 out vec3 iceNormalWC;
+out vec3 icePositionMC;
+out vec3 iceNormalModel;
 //ICE::Impl
   icePositionWC = (iceMCWCMatrix * vertexMC).xyz;
   iceNormalWC = iceNormalMCWCMatrix * iceNormalMC;
+  icePositionMC = (iceVBOToModelMatrix * vertexMC).xyz;
+  iceNormalModel = iceNormalMC;

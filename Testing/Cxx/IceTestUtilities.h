@@ -13,6 +13,7 @@
 #include <vector>
 
 class vtkIceCubeMapSource;
+class vtkIceMapper;
 class vtkObject;
 class vtkRenderer;
 class vtkRenderWindow;
@@ -47,6 +48,9 @@ Stats Summarize(std::vector<double> values);
 // comparison with the same baseline: mean channel difference <= 1/255 and at most 0.2 % of pixels
 // off by more than 16/255. Returns true when both pass.
 bool CheckImage(int argc, char* argv[], vtkRenderWindow* window);
+
+// Turns off cracks, air and bumps: the paper's optics alone, as the pixel references compute them.
+void UseCleanOptics(vtkIceMapper* mapper);
 
 // A cube-map texture from vtkIceCubeMapSource.
 vtkSmartPointer<vtkTexture> MakeCubeMap(int pattern, int faceSize);

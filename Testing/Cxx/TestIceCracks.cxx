@@ -35,6 +35,8 @@ struct Scene
   Scene()
   {
     this->Mapper->SetInputConnection(this->Block->GetOutputPort());
+    this->Mapper->SetNumberOfAirPlanes(0); // the cracks alone
+    this->Mapper->SetBumpStrength(0.0);
     this->Ice->SetMapper(this->Mapper);
     this->Renderer->AddActor(this->Ice);
     this->Renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 128));

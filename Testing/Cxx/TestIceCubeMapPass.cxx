@@ -112,7 +112,7 @@ struct Room
     sphere->SetThetaResolution(200);
     sphere->SetPhiResolution(200);
     this->IceMapper->SetInputConnection(sphere->GetOutputPort());
-    this->IceMapper->SetNumberOfCracks(0); // clean optics
+    IceTest::UseCleanOptics(this->IceMapper);
     this->Ice->SetMapper(this->IceMapper);
     this->Renderer->AddActor(this->Ice);
 

@@ -42,7 +42,7 @@ int TestIceFigure4(int argc, char* argv[])
     ice[side] = IceScene::Populate(renderers[side], teapot, environment, options);
     vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(ice[side]->GetMapper());
     mapper->SetTwoSidedRefraction(side == 0);
-    mapper->SetNumberOfCracks(0); // as in the paper's figure: cracks and air off
+    IceTest::UseCleanOptics(mapper); // as in the paper's figure: cracks and air off
     window->AddRenderer(renderers[side]);
   }
 

@@ -56,7 +56,7 @@ bool CheckPlacement(const Placement& placement, Mode mode)
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(sphere->GetOutputPort());
   mapper->SetTwoSidedRefraction(mode == Mode::TwoSided);
-  mapper->SetNumberOfCracks(0); // clean optics
+  IceTest::UseCleanOptics(mapper);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->SetPosition(placement.Position[0], placement.Position[1], placement.Position[2]);

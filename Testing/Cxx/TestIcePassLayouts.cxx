@@ -36,7 +36,7 @@ struct Ice
     this->Sphere->SetThetaResolution(200);
     this->Sphere->SetPhiResolution(200);
     this->Mapper->SetInputConnection(this->Sphere->GetOutputPort());
-    this->Mapper->SetNumberOfCracks(0); // clean optics
+    IceTest::UseCleanOptics(this->Mapper);
     this->Actor->SetMapper(this->Mapper);
     renderer->AddActor(this->Actor);
   }

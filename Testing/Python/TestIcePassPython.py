@@ -44,7 +44,10 @@ def main():
     teapot = vtkice.vtkIceTeapotSource()
     mapper = vtkice.vtkIceMapper()
     mapper.SetInputConnection(teapot.GetOutputPort())
-    mapper.SetNumberOfCracks(0)  # compare the refraction alone
+    # Compare the refraction alone: no cracks, air or bumps.
+    mapper.SetNumberOfCracks(0)
+    mapper.SetNumberOfAirPlanes(0)
+    mapper.SetBumpStrength(0.0)
     ice = vtk.vtkActor()
     ice.SetMapper(mapper)
     renderer.AddActor(ice)

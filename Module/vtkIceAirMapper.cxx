@@ -1,0 +1,121 @@
+#include "vtkIceAirMapper.h"
+
+#include "vtkIceAirFS.h"
+#include "vtkIceAirVS.h"
+#include "vtkIceShaderSections.h"
+
+#include "vtkDataObject.h"
+#include "vtkObjectFactory.h"
+#include "vtkShaderProgram.h"
+#include "vtkTexture.h"
+#include "vtkTextureObject.h"
+
+vtkStandardNewMacro(vtkIceAirMapper);
+
+//------------------------------------------------------------------------------
+vtkIceAirMapper::vtkIceAirMapper()
+{
+  this->MapDataArrayToVertexAttribute(
+    "iceAirUVMC", "vtkIceAirUV", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+}
+
+//------------------------------------------------------------------------------
+vtkIceAirMapper::~vtkIceAirMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::SetDepthIntervalTexture(vtkTextureObject* texture)
+{
+  // A per-frame texture read as a uniform: not a reason to rebuild anything.
+  this->DepthIntervalTexture = texture;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIceAirMapper::GetDepthIntervalTexture()
+{
+  return this->DepthIntervalTexture;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::SetAirTexture(vtkTexture* texture)
+{
+  if (this->AirTexture != texture)
+  {
+    this->AirTexture = texture;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkTexture* vtkIceAirMapper::GetAirTexture()
+{
+  return this->AirTexture;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  if (this->AirTexture)
+  {
+    this->AirTexture->Render(ren);
+  }
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceFinish(ren, act);
+  if (this->AirTexture)
+  {
+    this->AirTexture->PostRender(ren);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::ReplaceIceShaderValues(
+  std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
+{
+  using vtkIceShaderSections::AfterTag;
+  using vtkIceShaderSections::Get;
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceAirVS, "Dec")));
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceAirVS, "Impl")));
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceAirFS, "Dec")));
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceAirFS, "Impl")));
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor*)
+{
+  if (this->DepthIntervalTexture)
+  {
+    this->BindScreenTexture(program, ren, this->DepthIntervalTexture, "iceDepthInterval");
+  }
+  if (this->AirTexture)
+  {
+    program->SetUniformi("iceAirAtlas", this->AirTexture->GetTextureUnit());
+  }
+  program->SetUniformf("iceMilkiness", static_cast<float>(this->Milkiness));
+  program->SetUniformi("iceAirDebug", this->DebugColor ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  if (this->AirTexture)
+  {
+    this->AirTexture->ReleaseGraphicsResources(win);
+  }
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Milkiness: " << this->Milkiness << "\n";
+  os << indent << "DebugColor: " << this->DebugColor << "\n";
+}

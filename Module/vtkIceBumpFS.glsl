@@ -1,0 +1,10 @@
+//ICE::Dec
+uniform float iceBumpStrength;
+uniform float iceBumpFrequency; // noise cycles per model unit
+uniform float iceFresnelPower;
+//ICE::Impl
+    // A bumpy surface: the normal tilts with the gradient of a noise field fixed to the model, and
+    // the tilted normal drives reflection, refraction and a per-fragment Fresnel term.
+    nFront = iceBumpNormal(nFront,
+      iceNormalMCWCMatrix * iceNoiseGradient(icePositionMC * iceBumpFrequency), iceBumpStrength);
+    fresnel = iceFresnel(e, nFront, iceFresnelPower);

@@ -1,0 +1,215 @@
+// Air bubbles and the bumpy surface: air makes the inside of the ice whiter and no bubble pixel
+// lies outside the silhouette (bubbles drawn in green); bumps change the picture inside the ice
+// only, stay fixed to the model (moving ice and camera together changes nothing), and a normal
+// map works in their place; the same seeds give the same image, another air seed another.
+#include "IceTestUtilities.h"
+#include "vtkIceBlockSource.h"
+#include "vtkIceCubeMapSource.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <string>
+
+namespace
+{
+struct Scene
+{
+  vtkNew<vtkIceBlockSource> Block;
+  vtkNew<vtkIceMapper> Mapper;
+  vtkNew<vtkActor> Ice;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkIcePass> Pass;
+  vtkNew<vtkRenderWindow> Window;
+
+  Scene()
+  {
+    this->Mapper->SetInputConnection(this->Block->GetOutputPort());
+    IceTest::UseCleanOptics(this->Mapper);
+    this->Ice->SetMapper(this->Mapper);
+    this->Renderer->AddActor(this->Ice);
+    this->Renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 128));
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Renderer->SetPass(this->Pass);
+    this->Window->SetSize(240, 240);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->AddRenderer(this->Renderer);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(2.5, 2.0, 4.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    this->Renderer->ResetCameraClippingRange();
+  }
+
+  IceTest::Image Render()
+  {
+    this->Window->Render();
+    return IceTest::Capture(this->Window);
+  }
+};
+
+bool Expect(bool condition, const std::string& what)
+{
+  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
+  return condition;
+}
+
+bool InSilhouette(const IceTest::Image& silhouette, size_t p)
+{
+  const unsigned char* s = &silhouette.RGB[3 * p];
+  return s[0] || s[1] || s[2];
+}
+
+bool Air()
+{
+  Scene scene;
+  const IceTest::Image clear = scene.Render(); // black background: the ice is non-black
+  scene.Mapper->SetNumberOfAirPlanes(19);
+  const IceTest::Image milky = scene.Render();
+  double clearSum = 0.0;
+  double milkySum = 0.0;
+  size_t inside = 0;
+  for (size_t p = 0; p < clear.RGB.size() / 3; ++p)
+  {
+    if (InSilhouette(clear, p))
+    {
+      ++inside;
+      for (int c = 0; c < 3; ++c)
+      {
+        clearSum += clear.RGB[3 * p + c];
+        milkySum += milky.RGB[3 * p + c];
+      }
+    }
+  }
+  const double gain = (milkySum - clearSum) / (3.0 * inside);
+  std::cout << "air brightens the inside of the ice by " << gain << "/255 on average\n";
+  bool ok = Expect(gain > 8.0, "air makes the ice whiter");
+
+  scene.Mapper->SetMilkiness(1.0);
+  const IceTest::Image milkier = scene.Render();
+  double milkierSum = 0.0;
+  for (size_t p = 0; p < clear.RGB.size() / 3; ++p)
+  {
+    if (InSilhouette(clear, p))
+    {
+      milkierSum += milkier.RGB[3 * p] + milkier.RGB[3 * p + 1] + milkier.RGB[3 * p + 2];
+    }
+  }
+  ok = Expect(milkierSum > milkySum, "Milkiness 1 is whiter than 0.5") && ok;
+
+  scene.Mapper->SetDebugView(vtkIceMapper::DebugAir);
+  const IceTest::Image green = scene.Render();
+  size_t greenInside = 0;
+  size_t greenOutside = 0;
+  for (size_t p = 0; p < green.RGB.size() / 3; ++p)
+  {
+    const unsigned char* g = &green.RGB[3 * p];
+    if (g[0] <= 5 && g[1] >= 250 && g[2] <= 5)
+    {
+      (InSilhouette(clear, p) ? greenInside : greenOutside)++;
+    }
+  }
+  std::cout << "bubbles in green: " << greenInside << " pixels inside the silhouette, "
+            << greenOutside << " outside\n";
+  return Expect(greenOutside == 0 && greenInside > 1000, "no bubble outside the ice") && ok;
+}
+
+bool Bumps()
+{
+  Scene scene;
+  const IceTest::Image smooth = scene.Render();
+  scene.Mapper->SetBumpStrength(0.15);
+  const IceTest::Image bumpy = scene.Render();
+  size_t inside = 0;
+  size_t outside = 0;
+  for (size_t p = 0; p < smooth.RGB.size() / 3; ++p)
+  {
+    if (IceTest::PixelDifference(&smooth.RGB[3 * p], &bumpy.RGB[3 * p]) > 8)
+    {
+      (InSilhouette(smooth, p) ? inside : outside)++;
+    }
+  }
+  std::cout << "bumps change " << inside << " pixels inside the ice, " << outside << " outside\n";
+  bool ok = Expect(inside > 2000 && outside == 0, "bumps change the ice and nothing else");
+
+  // Bumps fixed to the model: moving the ice and the camera together changes nothing.
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  scene.Ice->SetPosition(0.7, -0.3, 0.4);
+  camera->SetPosition(3.2, 1.7, 4.4);
+  camera->SetFocalPoint(0.7, -0.3, 0.4);
+  scene.Renderer->ResetCameraClippingRange();
+  const IceTest::Image moved = scene.Render();
+  std::vector<double> differences;
+  for (size_t p = 0; p < bumpy.RGB.size() / 3; ++p)
+  {
+    differences.push_back(IceTest::PixelDifference(&bumpy.RGB[3 * p], &moved.RGB[3 * p]));
+  }
+  const IceTest::Stats stats = IceTest::Summarize(differences);
+  std::cout << "ice and camera moved together: mean difference " << stats.Mean << "/255, p99 "
+            << stats.P99 << "/255\n";
+  ok = Expect(stats.Mean <= 0.5 && stats.P99 <= 4.0, "bumps do not swim") && ok;
+
+  // A normal map in place of the procedural bumps: stripes of tilted normals.
+  vtkNew<vtkImageData> stripes;
+  stripes->SetDimensions(64, 64, 1);
+  stripes->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  for (int j = 0; j < 64; ++j)
+  {
+    for (int i = 0; i < 64; ++i)
+    {
+      const double tilt = 0.6 * std::sin(2.0 * 3.14159265358979 * i / 16.0);
+      stripes->SetScalarComponentFromDouble(i, j, 0, 0, 127.5 + 127.5 * tilt);
+      stripes->SetScalarComponentFromDouble(i, j, 0, 1, 127.5);
+      stripes->SetScalarComponentFromDouble(i, j, 0, 2, 255.0);
+    }
+  }
+  vtkNew<vtkTexture> normalMap;
+  normalMap->SetInputData(stripes);
+  normalMap->InterpolateOn();
+  normalMap->RepeatOn();
+  normalMap->SetColorModeToDirectScalars();
+  scene.Mapper->SetNormalMap(normalMap);
+  const IceTest::Image mapped = scene.Render();
+  size_t changed = 0;
+  for (size_t p = 0; p < moved.RGB.size() / 3; ++p)
+  {
+    changed += IceTest::PixelDifference(&moved.RGB[3 * p], &mapped.RGB[3 * p]) > 8 ? 1 : 0;
+  }
+  std::cout << "the normal map changes " << changed << " pixels against the procedural bumps\n";
+  return Expect(changed > 2000, "a normal map replaces the bumps") && ok;
+}
+
+bool Seeds()
+{
+  auto render = [](int airSeed) {
+    Scene scene;
+    scene.Mapper->SetNumberOfAirPlanes(19);
+    scene.Mapper->SetNumberOfCracks(2);
+    scene.Mapper->SetBumpStrength(0.15);
+    scene.Mapper->SetAirSeed(airSeed);
+    return scene.Render();
+  };
+  const IceTest::Image first = render(5);
+  const IceTest::Image again = render(5);
+  const IceTest::Image other = render(6);
+  return Expect(first.RGB == again.RGB, "the same seeds give the same image") &&
+    Expect(first.RGB != other.RGB, "another air seed gives other bubbles");
+}
+}
+
+int TestIceAirAndBumps(int, char*[])
+{
+  bool ok = Air();
+  ok = Bumps() && ok;
+  ok = Seeds() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
