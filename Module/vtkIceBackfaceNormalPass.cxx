@@ -2,23 +2,28 @@
 
 #include "vtkIceBackfaceNormalFS.h"
 #include "vtkIceMapper.h"
+#include "vtkIceScreenTarget.h"
 #include "vtkIceShaderSections.h"
 
 #include "vtkActor.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkIceBackfaceNormalPass);
+
+//------------------------------------------------------------------------------
+vtkIceBackfaceNormalPass::vtkIceBackfaceNormalPass()
+  : Target(new vtkIceScreenTarget)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkIceBackfaceNormalPass::~vtkIceBackfaceNormalPass() = default;
@@ -26,40 +31,7 @@ vtkIceBackfaceNormalPass::~vtkIceBackfaceNormalPass() = default;
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkIceBackfaceNormalPass::GetNormalTexture()
 {
-  return this->NormalTexture;
-}
-
-//------------------------------------------------------------------------------
-void vtkIceBackfaceNormalPass::AllocateResources(
-  vtkOpenGLRenderWindow* window, int width, int height)
-{
-  if (!this->NormalTexture)
-  {
-    this->NormalTexture = vtkSmartPointer<vtkTextureObject>::New();
-    this->NormalTexture->SetContext(window);
-    this->NormalTexture->SetFormat(GL_RGBA);
-    this->NormalTexture->SetInternalFormat(GL_RGBA32F);
-    this->NormalTexture->SetDataType(GL_FLOAT);
-    // Sampled texel for pixel, never filtered.
-    this->NormalTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->NormalTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->NormalTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->NormalTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->NormalTexture->Allocate2D(width, height, 4, VTK_FLOAT);
-  }
-  if (!this->DepthTexture)
-  {
-    this->DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
-    this->DepthTexture->SetContext(window);
-    this->DepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
-  }
-  if (!this->FrameBuffer)
-  {
-    this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->FrameBuffer->SetContext(window);
-  }
-  this->NormalTexture->Resize(width, height);
-  this->DepthTexture->Resize(width, height);
+  return this->Target->GetColorTexture();
 }
 
 //------------------------------------------------------------------------------
@@ -76,7 +48,7 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   int x;
   int y;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  this->AllocateResources(window, width, height);
+  this->Target->Prepare(window, width, height, 4);
 
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglScissor scissorSaver(state);
@@ -85,13 +57,7 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
 
-  state->PushFramebufferBindings();
-  this->FrameBuffer->Bind();
-  this->FrameBuffer->AddColorAttachment(0, this->NormalTexture);
-  this->FrameBuffer->ActivateDrawBuffers(1);
-  this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglScissor(0, 0, width, height);
+  this->Target->Bind(state);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDepthMask(GL_TRUE);
@@ -115,9 +81,7 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   }
   this->PostRender(s);
 
-  this->FrameBuffer->RemoveColorAttachments(1);
-  this->FrameBuffer->RemoveDepthAttachment();
-  state->PopFramebufferBindings();
+  this->Target->Unbind(state);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
@@ -136,25 +100,12 @@ bool vtkIceBackfaceNormalPass::PostReplaceShaderValues(std::string&, std::string
 void vtkIceBackfaceNormalPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  if (this->FrameBuffer)
-  {
-    this->FrameBuffer->ReleaseGraphicsResources(w);
-  }
-  for (vtkTextureObject* texture : { this->NormalTexture.Get(), this->DepthTexture.Get() })
-  {
-    if (texture)
-    {
-      texture->ReleaseGraphicsResources(w);
-    }
-  }
-  this->FrameBuffer = nullptr;
-  this->NormalTexture = nullptr;
-  this->DepthTexture = nullptr;
+  this->Target->ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
 void vtkIceBackfaceNormalPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NormalTexture: " << this->NormalTexture.Get() << "\n";
+  os << indent << "NormalTexture: " << this->Target->GetColorTexture() << "\n";
 }

@@ -15,10 +15,10 @@
 
 #include "RenderingIceModule.h" // for export macro
 #include "vtkOpenGLRenderPass.h"
-#include "vtkSmartPointer.h" // for members
 
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLRenderWindow;
+#include <memory> // for members
+
+class vtkIceScreenTarget;
 class vtkTextureObject;
 
 class RENDERINGICE_EXPORT vtkIceBackfaceNormalPass : public vtkOpenGLRenderPass
@@ -44,14 +44,10 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
 
 protected:
-  vtkIceBackfaceNormalPass() = default;
+  vtkIceBackfaceNormalPass();
   ~vtkIceBackfaceNormalPass() override;
 
-  void AllocateResources(vtkOpenGLRenderWindow* window, int width, int height);
-
-  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
-  vtkSmartPointer<vtkTextureObject> NormalTexture;
-  vtkSmartPointer<vtkTextureObject> DepthTexture;
+  std::unique_ptr<vtkIceScreenTarget> Target;
 
 private:
   vtkIceBackfaceNormalPass(const vtkIceBackfaceNormalPass&) = delete;

@@ -1,20 +1,19 @@
 #include "vtkIceDepthIntervalPass.h"
 
 #include "vtkIceDepthIntervalFS.h"
+#include "vtkIceScreenTarget.h"
 #include "vtkIceShaderSections.h"
 
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -51,7 +50,10 @@ bool FitDepthRange(const vtkRenderState* s, const double eye[3], const double di
 }
 
 //------------------------------------------------------------------------------
-vtkIceDepthIntervalPass::vtkIceDepthIntervalPass() = default;
+vtkIceDepthIntervalPass::vtkIceDepthIntervalPass()
+  : Target(new vtkIceScreenTarget)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkIceDepthIntervalPass::~vtkIceDepthIntervalPass() = default;
@@ -59,39 +61,7 @@ vtkIceDepthIntervalPass::~vtkIceDepthIntervalPass() = default;
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkIceDepthIntervalPass::GetDepthTexture()
 {
-  return this->DepthTexture;
-}
-
-//------------------------------------------------------------------------------
-void vtkIceDepthIntervalPass::AllocateResources(
-  vtkOpenGLRenderWindow* window, int width, int height)
-{
-  if (!this->DepthTexture)
-  {
-    this->DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
-    this->DepthTexture->SetContext(window);
-    this->DepthTexture->SetFormat(GL_RG);
-    this->DepthTexture->SetInternalFormat(GL_RG32F);
-    this->DepthTexture->SetDataType(GL_FLOAT);
-    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->DepthTexture->Allocate2D(width, height, 2, VTK_FLOAT);
-  }
-  if (!this->ZBufferTexture)
-  {
-    this->ZBufferTexture = vtkSmartPointer<vtkTextureObject>::New();
-    this->ZBufferTexture->SetContext(window);
-    this->ZBufferTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
-  }
-  if (!this->FrameBuffer)
-  {
-    this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->FrameBuffer->SetContext(window);
-  }
-  this->DepthTexture->Resize(width, height);
-  this->ZBufferTexture->Resize(width, height);
+  return this->Target->GetColorTexture();
 }
 
 //------------------------------------------------------------------------------
@@ -109,7 +79,7 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   int x;
   int y;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  this->AllocateResources(window, width, height);
+  this->Target->Prepare(window, width, height, 2);
 
   // Near and far planes on the props' bounding box: the depth test in this pass gets all the
   // depth buffer's precision. The texture stores linear view depth, independent of them.
@@ -130,13 +100,7 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
 
-  state->PushFramebufferBindings();
-  this->FrameBuffer->Bind();
-  this->FrameBuffer->AddColorAttachment(0, this->DepthTexture);
-  this->FrameBuffer->ActivateDrawBuffers(1);
-  this->FrameBuffer->AddDepthAttachment(this->ZBufferTexture);
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglScissor(0, 0, width, height);
+  this->Target->Bind(state);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDepthMask(GL_TRUE);
@@ -164,9 +128,7 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   this->PostRender(s);
   state->vtkglClearDepth(1.0);
 
-  this->FrameBuffer->RemoveColorAttachments(1);
-  this->FrameBuffer->RemoveDepthAttachment();
-  state->PopFramebufferBindings();
+  this->Target->Unbind(state);
   camera->SetClippingRange(clipping);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
@@ -197,20 +159,7 @@ bool vtkIceDepthIntervalPass::SetShaderParameters(
 void vtkIceDepthIntervalPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  if (this->FrameBuffer)
-  {
-    this->FrameBuffer->ReleaseGraphicsResources(w);
-  }
-  for (vtkTextureObject* texture : { this->DepthTexture.Get(), this->ZBufferTexture.Get() })
-  {
-    if (texture)
-    {
-      texture->ReleaseGraphicsResources(w);
-    }
-  }
-  this->FrameBuffer = nullptr;
-  this->DepthTexture = nullptr;
-  this->ZBufferTexture = nullptr;
+  this->Target->ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------

@@ -15,10 +15,10 @@
 
 #include "RenderingIceModule.h" // for export macro
 #include "vtkOpenGLRenderPass.h"
-#include "vtkSmartPointer.h" // for members
 
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLRenderWindow;
+#include <memory> // for members
+
+class vtkIceScreenTarget;
 class vtkTextureObject;
 
 class RENDERINGICE_EXPORT vtkIceDepthIntervalPass : public vtkOpenGLRenderPass
@@ -56,11 +56,7 @@ protected:
   vtkIceDepthIntervalPass();
   ~vtkIceDepthIntervalPass() override;
 
-  void AllocateResources(vtkOpenGLRenderWindow* window, int width, int height);
-
-  vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
-  vtkSmartPointer<vtkTextureObject> DepthTexture;   // RG32F colour: the result
-  vtkSmartPointer<vtkTextureObject> ZBufferTexture; // depth attachment for the depth test
+  std::unique_ptr<vtkIceScreenTarget> Target; // RG32F: the result
   double DepthRange[2] = { 0.0, 1.0 };
   int Stage = 0;
   vtkIdType NumberOfGeometryPasses = 0;

@@ -1,7 +1,11 @@
 #include "IceTestUtilities.h"
 
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceBlockSource.h"
 #include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+
+#include "vtkActor.h"
 #include "vtkIceMapper.h"
 
 #include "vtkActor.h"
@@ -371,6 +375,39 @@ bool ReportInvisibility(const std::string& name, const Invisibility& result)
             << invisible.P99 << "/255, max " << invisible.Max << "/255; default ice: mean "
             << visible.Mean << "/255, p99 " << visible.P99 << "/255\n";
   return ok;
+}
+
+BlockScene::BlockScene()
+  : Mapper(vtkSmartPointer<vtkIceMapper>::New())
+  , Ice(vtkSmartPointer<vtkActor>::New())
+  , Renderer(vtkSmartPointer<vtkRenderer>::New())
+  , Pass(vtkSmartPointer<vtkIcePass>::New())
+  , Window(vtkSmartPointer<vtkRenderWindow>::New())
+{
+  vtkNew<vtkIceBlockSource> block;
+  block->Update();
+  this->Mapper->SetInputData(block->GetOutput());
+  UseCleanOptics(this->Mapper);
+  this->Ice->SetMapper(this->Mapper);
+  this->Renderer->AddActor(this->Ice);
+  this->Renderer->SetEnvironmentTexture(MakeCubeMap(vtkIceCubeMapSource::Sky, 128));
+  this->Renderer->SetBackground(0.0, 0.0, 0.0);
+  this->Renderer->SetPass(this->Pass);
+  this->Window->SetSize(240, 240);
+  this->Window->SetOffScreenRendering(1);
+  this->Window->AddRenderer(this->Renderer);
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  camera->SetPosition(2.5, 2.0, 4.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  this->Renderer->ResetCameraClippingRange();
+}
+
+BlockScene::~BlockScene() = default;
+
+Image BlockScene::Render()
+{
+  this->Window->Render();
+  return Capture(this->Window);
 }
 
 void MessageRecorder::Execute(vtkObject*, unsigned long event, void* data)

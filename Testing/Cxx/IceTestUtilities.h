@@ -13,7 +13,9 @@
 #include <vector>
 
 class vtkIceCubeMapSource;
+class vtkActor;
 class vtkIceMapper;
+class vtkIcePass;
 class vtkObject;
 class vtkRenderer;
 class vtkRenderWindow;
@@ -101,6 +103,21 @@ Invisibility MeasureInvisibility(vtkTexture* environment);
 // Prints the figures and checks the bounds: over 20 000 interior pixels, invisible ice within
 // mean 1/255 and p99 4/255 of the background, default ice at least 5/255 off on average.
 bool ReportInvisibility(const std::string& name, const Invisibility& result);
+
+// The ice block (clean optics) in a sky environment on black, with vtkIcePass, 240 x 240: the
+// scene of the crack, air and bump tests.
+struct BlockScene
+{
+  BlockScene();
+  ~BlockScene();
+  // Renders and reads back (rendering again once more, as Capture does).
+  Image Render();
+  vtkSmartPointer<vtkIceMapper> Mapper;
+  vtkSmartPointer<vtkActor> Ice;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkIcePass> Pass;
+  vtkSmartPointer<vtkRenderWindow> Window;
+};
 
 // Records the error and warning messages an object emits (and keeps them off the console).
 class MessageRecorder : public vtkCommand

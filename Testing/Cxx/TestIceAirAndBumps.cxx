@@ -3,8 +3,6 @@
 // only, stay fixed to the model (moving ice and camera together changes nothing), and a normal
 // map works in their place; the same seeds give the same image, another air seed another.
 #include "IceTestUtilities.h"
-#include "vtkIceBlockSource.h"
-#include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
 
@@ -23,39 +21,6 @@
 
 namespace
 {
-struct Scene
-{
-  vtkNew<vtkIceBlockSource> Block;
-  vtkNew<vtkIceMapper> Mapper;
-  vtkNew<vtkActor> Ice;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkIcePass> Pass;
-  vtkNew<vtkRenderWindow> Window;
-
-  Scene()
-  {
-    this->Mapper->SetInputConnection(this->Block->GetOutputPort());
-    IceTest::UseCleanOptics(this->Mapper);
-    this->Ice->SetMapper(this->Mapper);
-    this->Renderer->AddActor(this->Ice);
-    this->Renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 128));
-    this->Renderer->SetBackground(0.0, 0.0, 0.0);
-    this->Renderer->SetPass(this->Pass);
-    this->Window->SetSize(240, 240);
-    this->Window->SetOffScreenRendering(1);
-    this->Window->AddRenderer(this->Renderer);
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetPosition(2.5, 2.0, 4.0);
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    this->Renderer->ResetCameraClippingRange();
-  }
-
-  IceTest::Image Render()
-  {
-    this->Window->Render();
-    return IceTest::Capture(this->Window);
-  }
-};
 
 bool Expect(bool condition, const std::string& what)
 {
@@ -71,7 +36,7 @@ bool InSilhouette(const IceTest::Image& silhouette, size_t p)
 
 bool Air()
 {
-  Scene scene;
+  IceTest::BlockScene scene;
   const IceTest::Image clear = scene.Render(); // black background: the ice is non-black
   scene.Mapper->SetNumberOfAirPlanes(19);
   const IceTest::Image milky = scene.Render();
@@ -125,7 +90,7 @@ bool Air()
 
 bool Bumps()
 {
-  Scene scene;
+  IceTest::BlockScene scene;
   const IceTest::Image smooth = scene.Render();
   scene.Mapper->SetBumpStrength(0.15);
   const IceTest::Image bumpy = scene.Render();
@@ -191,7 +156,7 @@ bool Bumps()
 bool Seeds()
 {
   auto render = [](int airSeed) {
-    Scene scene;
+    IceTest::BlockScene scene;
     scene.Mapper->SetNumberOfAirPlanes(19);
     scene.Mapper->SetNumberOfCracks(2);
     scene.Mapper->SetBumpStrength(0.15);

@@ -4,18 +4,14 @@
 // the ice costs the same passes and one crack draw per frame whatever NumberOfCracks; and crack
 // normals perturb the refraction only when asked.
 #include "IceTestUtilities.h"
-#include "vtkIceBlockSource.h"
-#include "vtkIceCubeMapSource.h"
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTexture.h"
 
 #include <functional>
 #include <iostream>
@@ -23,40 +19,6 @@
 
 namespace
 {
-struct Scene
-{
-  vtkNew<vtkIceBlockSource> Block;
-  vtkNew<vtkIceMapper> Mapper;
-  vtkNew<vtkActor> Ice;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkIcePass> Pass;
-  vtkNew<vtkRenderWindow> Window;
-
-  Scene()
-  {
-    this->Mapper->SetInputConnection(this->Block->GetOutputPort());
-    this->Mapper->SetNumberOfAirPlanes(0); // the cracks alone
-    this->Mapper->SetBumpStrength(0.0);
-    this->Ice->SetMapper(this->Mapper);
-    this->Renderer->AddActor(this->Ice);
-    this->Renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 128));
-    this->Renderer->SetBackground(0.0, 0.0, 0.0);
-    this->Renderer->SetPass(this->Pass);
-    this->Window->SetSize(240, 240);
-    this->Window->SetOffScreenRendering(1);
-    this->Window->AddRenderer(this->Renderer);
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetPosition(2.5, 2.0, 4.0);
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    this->Renderer->ResetCameraClippingRange();
-  }
-
-  IceTest::Image Render()
-  {
-    this->Window->Render();
-    return IceTest::Capture(this->Window);
-  }
-};
 
 bool IsRed(const unsigned char* p)
 {
@@ -86,8 +48,7 @@ void Count(const IceTest::Image& image, const IceTest::Image& silhouette,
 
 bool Clipping()
 {
-  Scene scene;
-  scene.Mapper->SetNumberOfCracks(0);
+  IceTest::BlockScene scene;
   const IceTest::Image silhouette = scene.Render(); // black background: ice is non-black
   scene.Mapper->SetNumberOfCracks(2);
   bool ok = true;
@@ -122,7 +83,8 @@ bool Clipping()
 bool Seeds()
 {
   auto render = [](int seed) {
-    Scene scene;
+    IceTest::BlockScene scene;
+    scene.Mapper->SetNumberOfCracks(2);
     scene.Mapper->SetCrackSeed(seed);
     scene.Mapper->SetDebugView(vtkIceMapper::DebugCracksClipped);
     return scene.Render();
@@ -136,7 +98,8 @@ bool Seeds()
 
 bool PassCount()
 {
-  Scene scene;
+  IceTest::BlockScene scene;
+  scene.Mapper->SetNumberOfCracks(2);
   bool ok = true;
   for (int cracks : { 2, 128 })
   {
@@ -158,7 +121,8 @@ bool PassCount()
 
 bool PerturbRefraction()
 {
-  Scene scene;
+  IceTest::BlockScene scene;
+  scene.Mapper->SetNumberOfCracks(2);
   scene.Mapper->SetCrackIntensity(0.0); // look at the refraction alone
   const IceTest::Image plain = scene.Render();
   scene.Mapper->CracksPerturbRefractionOn();

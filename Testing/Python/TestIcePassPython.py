@@ -8,26 +8,7 @@ import sys
 import vtk
 import vtkice
 
-
-def grab(window):
-    window.Render()
-    capture = vtk.vtkWindowToImageFilter()
-    capture.SetInput(window)
-    capture.SetInputBufferTypeToRGB()
-    capture.ReadFrontBufferOff()
-    capture.Update()
-    image = vtk.vtkImageData()
-    image.DeepCopy(capture.GetOutput())
-    return image
-
-
-def mean_difference(a, b, x0, x1, y0, y1):
-    total = 0.0
-    for y in range(y0, y1):
-        for x in range(x0, x1):
-            total += max(abs(a.GetScalarComponentAsDouble(x, y, 0, c) -
-                             b.GetScalarComponentAsDouble(x, y, 0, c)) for c in range(3))
-    return total / ((x1 - x0) * (y1 - y0))
+from ice_test_helpers import grab, mean_difference
 
 
 def main():

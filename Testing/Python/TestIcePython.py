@@ -8,25 +8,7 @@ import sys
 import vtk
 import vtkice
 
-
-def grab(window):
-    capture = vtk.vtkWindowToImageFilter()
-    capture.SetInput(window)
-    capture.SetInputBufferTypeToRGB()
-    capture.ReadFrontBufferOff()
-    capture.Update()
-    return capture.GetOutput()
-
-
-def difference(a, b, x0, x1, y0, y1):
-    total = 0.0
-    count = 0
-    for y in range(y0, y1):
-        for x in range(x0, x1):
-            total += max(abs(a.GetScalarComponentAsDouble(x, y, 0, c) -
-                             b.GetScalarComponentAsDouble(x, y, 0, c)) for c in range(3))
-            count += 1
-    return total / count
+from ice_test_helpers import grab, mean_difference
 
 
 def main():
@@ -75,12 +57,12 @@ def main():
     mapper.SetRefractionRatio(1.0)
     mapper.SetFresnelPower(1.0e6)
     window.Render()
-    invisible = difference(background, grab(window), *box)
+    invisible = mean_difference(background, grab(window), *box)
 
     mapper.SetRefractionRatio(1.0003 / 1.3091)
     mapper.SetFresnelPower(3.0)
     window.Render()
-    visible = difference(background, grab(window), *box)
+    visible = mean_difference(background, grab(window), *box)
 
     print("eta 1: mean difference %.3f/255; default ice: %.3f/255" % (invisible, visible))
     assert invisible <= 1.0, "ice with eta 1 must be invisible against the skybox"

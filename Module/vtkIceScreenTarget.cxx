@@ -1,0 +1,84 @@
+#include "vtkIceScreenTarget.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+vtkIceScreenTarget::vtkIceScreenTarget() = default;
+vtkIceScreenTarget::~vtkIceScreenTarget() = default;
+
+void vtkIceScreenTarget::Prepare(
+  vtkOpenGLRenderWindow* window, int width, int height, int components)
+{
+  if (!this->ColorTexture)
+  {
+    this->ColorTexture = vtkSmartPointer<vtkTextureObject>::New();
+    this->ColorTexture->SetContext(window);
+    this->ColorTexture->SetFormat(components == 2 ? GL_RG : GL_RGBA);
+    this->ColorTexture->SetInternalFormat(components == 2 ? GL_RG32F : GL_RGBA32F);
+    this->ColorTexture->SetDataType(GL_FLOAT);
+    this->ColorTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->ColorTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->ColorTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->ColorTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->ColorTexture->Allocate2D(width, height, components, VTK_FLOAT);
+  }
+  if (!this->DepthTexture)
+  {
+    this->DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
+    this->DepthTexture->SetContext(window);
+    this->DepthTexture->AllocateDepth(width, height, vtkTextureObject::Float32);
+  }
+  if (!this->FrameBuffer)
+  {
+    this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->FrameBuffer->SetContext(window);
+  }
+  this->ColorTexture->Resize(width, height);
+  this->DepthTexture->Resize(width, height);
+  this->Width = width;
+  this->Height = height;
+}
+
+void vtkIceScreenTarget::Bind(vtkOpenGLState* state)
+{
+  state->PushFramebufferBindings();
+  this->FrameBuffer->Bind();
+  this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
+  this->FrameBuffer->ActivateDrawBuffers(1);
+  this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
+  state->vtkglViewport(0, 0, this->Width, this->Height);
+  state->vtkglScissor(0, 0, this->Width, this->Height);
+}
+
+void vtkIceScreenTarget::Unbind(vtkOpenGLState* state)
+{
+  this->FrameBuffer->RemoveColorAttachments(1);
+  this->FrameBuffer->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+}
+
+vtkTextureObject* vtkIceScreenTarget::GetColorTexture() const
+{
+  return this->ColorTexture;
+}
+
+void vtkIceScreenTarget::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->FrameBuffer)
+  {
+    this->FrameBuffer->ReleaseGraphicsResources(window);
+  }
+  for (vtkTextureObject* texture : { this->ColorTexture.Get(), this->DepthTexture.Get() })
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(window);
+    }
+  }
+  this->FrameBuffer = nullptr;
+  this->ColorTexture = nullptr;
+  this->DepthTexture = nullptr;
+}
