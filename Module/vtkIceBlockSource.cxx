@@ -1,6 +1,7 @@
 #include "vtkIceBlockSource.h"
 
 #include "vtkIceNoise.h"
+#include "vtkIceSmoothNormals.h"
 
 #include "vtkCellArray.h"
 #include "vtkInformation.h"
@@ -9,7 +10,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 
 #include <algorithm>
 #include <cmath>
@@ -124,16 +124,7 @@ int vtkIceBlockSource::RequestData(
   block->SetPoints(points);
   block->SetPolys(polys);
 
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(block);
-  normals->SplittingOff();
-  normals->ConsistencyOn();
-  normals->AutoOrientNormalsOff();
-  normals->ComputePointNormalsOn();
-  normals->ComputeCellNormalsOff();
-  normals->Update();
-
-  output->ShallowCopy(normals->GetOutput());
+  output->ShallowCopy(vtkIceSmoothNormals(block));
   return 1;
 }
 

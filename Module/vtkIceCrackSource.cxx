@@ -1,6 +1,7 @@
 #include "vtkIceCrackSource.h"
 
 #include "vtkIceNoise.h"
+#include "vtkIceSmoothNormals.h"
 
 #include "vtkCellArray.h"
 #include "vtkInformation.h"
@@ -10,7 +11,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 
 #include <cmath>
 #include <cstdint>
@@ -83,13 +83,7 @@ int vtkIceCrackSource::RequestData(
   vtkNew<vtkPolyData> sheet;
   sheet->SetPoints(points);
   sheet->SetPolys(triangles);
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(sheet);
-  normals->SplittingOff();
-  normals->ConsistencyOn();
-  normals->ComputeCellNormalsOff();
-  normals->Update();
-  output->ShallowCopy(normals->GetOutput());
+  output->ShallowCopy(vtkIceSmoothNormals(sheet));
   return 1;
 }
 

@@ -112,6 +112,35 @@ void DrawOverScene(vtkRenderer* ren, vtkMapper* mapper, vtkActor* actor, Overlay
   mapper->Render(ren, actor);
 }
 const int GenericCrackModels = 3;
+
+// Random placement `index` of `sequence` inside `bounds`: a random orientation (axis uniform on
+// the sphere), the centre within the middle `spread` fraction of the bounds, a uniform scale
+// between minScale and maxScale times the largest extent. Writes the centre.
+vtkSmartPointer<vtkTransform> RandomPlacement(std::uint32_t sequence, int index,
+  const double bounds[6], double spread, double minScale, double maxScale, double center[3])
+{
+  double u[7];
+  for (int k = 0; k < 7; ++k)
+  {
+    u[k] = vtkIceNoise::Uniform(sequence, static_cast<std::uint32_t>(7 * index + k));
+  }
+  const double z = 2.0 * u[0] - 1.0;
+  const double phi = 2.0 * vtkMath::Pi() * u[1];
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  double extent = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double size = bounds[2 * c + 1] - bounds[2 * c];
+    center[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]) + spread * (u[3 + c] - 0.5) * size;
+    extent = std::max(extent, size);
+  }
+  auto placement = vtkSmartPointer<vtkTransform>::New();
+  placement->Translate(center);
+  placement->RotateWXYZ(360.0 * u[2], r * std::cos(phi), r * std::sin(phi), z);
+  const double scale = extent * (minScale + (maxScale - minScale) * u[6]);
+  placement->Scale(scale, scale, scale);
+  return placement;
+}
 }
 
 // The crack surfaces of one ice mapper: their geometry (cached) and what draws it.
@@ -162,8 +191,6 @@ private:
   {
     double bounds[6];
     ice->GetBounds(bounds);
-    const double size[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
-    const double extent = std::max({ size[0], size[1], size[2] });
 
     vtkSmartPointer<vtkPolyData> models[GenericCrackModels];
     for (int m = 0; m < GenericCrackModels; ++m)
@@ -178,26 +205,11 @@ private:
     const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 7919U + 1U;
     for (int i = 0; i < number; ++i)
     {
-      double u[7];
-      for (int k = 0; k < 7; ++k)
-      {
-        u[k] = vtkIceNoise::Uniform(sequence, static_cast<std::uint32_t>(7 * i + k));
-      }
-      // A random orientation (axis uniform on the sphere), a position near the centre and a
-      // size that spans most of the ice.
-      const double z = 2.0 * u[0] - 1.0;
-      const double phi = 2.0 * vtkMath::Pi() * u[1];
-      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-      vtkNew<vtkTransform> transform;
-      transform->Translate(0.5 * (bounds[0] + bounds[1]) + 0.3 * (u[3] - 0.5) * size[0],
-        0.5 * (bounds[2] + bounds[3]) + 0.3 * (u[4] - 0.5) * size[1],
-        0.5 * (bounds[4] + bounds[5]) + 0.3 * (u[5] - 0.5) * size[2]);
-      transform->RotateWXYZ(360.0 * u[2], r * std::cos(phi), r * std::sin(phi), z);
-      const double scale = 0.6 * extent * (0.8 + 0.4 * u[6]);
-      transform->Scale(scale, scale, scale);
+      // Near the centre, large enough to span most of the ice.
+      double center[3];
       vtkNew<vtkTransformPolyDataFilter> place;
       place->SetInputData(models[i % GenericCrackModels]);
-      place->SetTransform(transform);
+      place->SetTransform(RandomPlacement(sequence, i, bounds, 0.3, 0.48, 0.72, center));
       append->AddInputConnection(place->GetOutputPort());
     }
     if (number == 0)
@@ -328,8 +340,6 @@ private:
   {
     double bounds[6];
     ice->GetBounds(bounds);
-    const double size[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
-    const double extent = std::max({ size[0], size[1], size[2] });
     vtkNew<vtkPoints> points;
     vtkNew<vtkFloatArray> uv;
     uv->SetName("vtkIceAirUV");
@@ -342,25 +352,10 @@ private:
     const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 6151U + 7U;
     for (int i = 0; i < number; ++i)
     {
-      double u[7];
-      for (int k = 0; k < 7; ++k)
-      {
-        u[k] = vtkIceNoise::Uniform(sequence, static_cast<std::uint32_t>(7 * i + k));
-      }
-      // A random orientation and a position in the middle 40 % of the bounds.
-      const double z = 2.0 * u[0] - 1.0;
-      const double phi = 2.0 * vtkMath::Pi() * u[1];
-      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      // In the middle 40 % of the bounds, half-sizes of 0.2 to 0.4 of the largest extent.
       double center[3];
-      for (int c = 0; c < 3; ++c)
-      {
-        center[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]) + 0.4 * (u[3 + c] - 0.5) * size[c];
-      }
-      vtkNew<vtkTransform> place;
-      place->Translate(center);
-      place->RotateWXYZ(360.0 * u[2], r * std::cos(phi), r * std::sin(phi), z);
-      const double half = extent * (0.2 + 0.2 * u[6]);
-      place->Scale(half, half, half);
+      vtkSmartPointer<vtkTransform> place =
+        RandomPlacement(sequence, i, bounds, 0.4, 0.2, 0.4, center);
       // Each plane shows one tile of the 2 x 2 atlas, inset against bleeding.
       const double tileU = 0.5 * (i % 2);
       const double tileV = 0.5 * ((i / 2) % 2);

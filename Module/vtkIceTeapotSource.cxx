@@ -1,5 +1,7 @@
 #include "vtkIceTeapotSource.h"
 
+#include "vtkIceSmoothNormals.h"
+
 #include "vtkCellArray.h"
 #include "vtkCleanPolyData.h"
 #include "vtkInformation.h"
@@ -8,7 +10,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 
 #include <algorithm>
 
@@ -328,16 +329,8 @@ int vtkIceTeapotSource::RequestData(
   clean->ConvertStripsToPolysOff();
   clean->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
 
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(clean->GetOutputPort());
-  normals->SplittingOff();
-  normals->ConsistencyOn();
-  normals->AutoOrientNormalsOff();
-  normals->ComputePointNormalsOn();
-  normals->ComputeCellNormalsOff();
-  normals->Update();
-
-  output->ShallowCopy(normals->GetOutput());
+  clean->Update();
+  output->ShallowCopy(vtkIceSmoothNormals(clean->GetOutput()));
   return 1;
 }
 

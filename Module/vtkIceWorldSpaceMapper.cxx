@@ -1,6 +1,7 @@
 #include "vtkIceWorldSpaceMapper.h"
 
 #include "vtkIceShaderSections.h"
+#include "vtkIceSmoothNormals.h"
 #include "vtkIceWorldSpaceFS.h"
 #include "vtkIceWorldSpaceVS.h"
 
@@ -18,7 +19,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -93,13 +93,7 @@ bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
   }
   else
   {
-    vtkNew<vtkPolyDataNormals> computeNormals;
-    computeNormals->SetInputData(input);
-    computeNormals->SplittingOff();
-    computeNormals->ConsistencyOn();
-    computeNormals->ComputeCellNormalsOff();
-    computeNormals->Update();
-    this->PreparedInput->ShallowCopy(computeNormals->GetOutput());
+    this->PreparedInput->ShallowCopy(vtkIceSmoothNormals(input));
     iceNormals = this->PreparedInput->GetPointData()->GetNormals();
   }
   iceNormals->SetName(IceNormalArray);
