@@ -40,27 +40,8 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
-  vtkOpenGLRenderWindow* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* state = window->GetState();
-
-  int width;
-  int height;
-  int x;
-  int y;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  this->Target->Prepare(window, width, height, 4);
-
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglScissor scissorSaver(state);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-
-  this->Target->Bind(state);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDepthMask(GL_TRUE);
+  vtkIceScreenTarget::Drawing drawing(*this->Target, renderer, 4);
+  vtkOpenGLState* state = drawing.State;
   state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -80,8 +61,6 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
     }
   }
   this->PostRender(s);
-
-  this->Target->Unbind(state);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 

@@ -70,16 +70,7 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
-  vtkOpenGLRenderWindow* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* state = window->GetState();
   vtkCamera* camera = renderer->GetActiveCamera();
-
-  int width;
-  int height;
-  int x;
-  int y;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  this->Target->Prepare(window, width, height, 2);
 
   // Near and far planes on the props' bounding box: the depth test in this pass gets all the
   // depth buffer's precision. The texture stores linear view depth, independent of them.
@@ -91,44 +82,33 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
     camera->SetClippingRange(0.99 * nearest, 1.01 * this->DepthRange[1]);
   }
 
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglScissor scissorSaver(state);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-
-  this->Target->Bind(state);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDepthMask(GL_TRUE);
-  // Empty interval where there is no ice: front beyond back.
-  state->vtkglClearColor(FLT_MAX, -FLT_MAX, 0.0, 0.0);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
-
-  this->PreRender(s);
-  // Stage 0: nearest front face into R. Stage 1: farthest back face into G.
-  for (this->Stage = 0; this->Stage < 2; ++this->Stage)
   {
-    const bool front = this->Stage == 0;
-    state->vtkglColorMask(front, !front, GL_FALSE, GL_FALSE);
-    state->vtkglClearDepth(front ? 1.0 : 0.0);
-    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    state->vtkglDepthFunc(front ? GL_LESS : GL_GREATER);
-    for (int i = 0; i < s->GetPropArrayCount(); ++i)
-    {
-      this->NumberOfRenderedProps += s->GetPropArray()[i]->RenderOpaqueGeometry(renderer);
-    }
-    ++this->NumberOfGeometryPasses;
-  }
-  this->Stage = 0;
-  this->PostRender(s);
-  state->vtkglClearDepth(1.0);
+    vtkIceScreenTarget::Drawing drawing(*this->Target, renderer, 2);
+    vtkOpenGLState* state = drawing.State;
+    // Empty interval where there is no ice: front beyond back.
+    state->vtkglClearColor(FLT_MAX, -FLT_MAX, 0.0, 0.0);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
 
-  this->Target->Unbind(state);
+    this->PreRender(s);
+    // Stage 0: nearest front face into R. Stage 1: farthest back face into G.
+    for (this->Stage = 0; this->Stage < 2; ++this->Stage)
+    {
+      const bool front = this->Stage == 0;
+      state->vtkglColorMask(front, !front, GL_FALSE, GL_FALSE);
+      state->vtkglClearDepth(front ? 1.0 : 0.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+      state->vtkglDepthFunc(front ? GL_LESS : GL_GREATER);
+      for (int i = 0; i < s->GetPropArrayCount(); ++i)
+      {
+        this->NumberOfRenderedProps += s->GetPropArray()[i]->RenderOpaqueGeometry(renderer);
+      }
+      ++this->NumberOfGeometryPasses;
+    }
+    this->Stage = 0;
+    this->PostRender(s);
+    state->vtkglClearDepth(1.0);
+  }
   camera->SetClippingRange(clipping);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }

@@ -2,7 +2,7 @@
 
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -81,4 +81,43 @@ void vtkIceScreenTarget::ReleaseGraphicsResources(vtkWindow* window)
   this->FrameBuffer = nullptr;
   this->ColorTexture = nullptr;
   this->DepthTexture = nullptr;
+}
+
+namespace
+{
+vtkOpenGLState* StateOf(vtkRenderer* renderer)
+{
+  return static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
+}
+}
+
+vtkIceScreenTarget::Drawing::Drawing(
+  vtkIceScreenTarget& target, vtkRenderer* renderer, int components)
+  : State(StateOf(renderer))
+  , Target(target)
+  , Viewport(this->State)
+  , Scissor(this->State)
+  , ClearColor(this->State)
+  , ColorMask(this->State)
+  , DepthMask(this->State)
+  , DepthFunc(this->State)
+  , DepthTest(this->State, GL_DEPTH_TEST)
+  , Blend(this->State, GL_BLEND)
+{
+  int width;
+  int height;
+  int x;
+  int y;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  target.Prepare(static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow()), width, height,
+    components);
+  target.Bind(this->State);
+  this->State->vtkglEnable(GL_DEPTH_TEST);
+  this->State->vtkglDisable(GL_BLEND);
+  this->State->vtkglDepthMask(GL_TRUE);
+}
+
+vtkIceScreenTarget::Drawing::~Drawing()
+{
+  this->Target.Unbind(this->State);
 }

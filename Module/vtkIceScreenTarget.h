@@ -4,11 +4,12 @@
 #ifndef vtkIceScreenTarget_h
 #define vtkIceScreenTarget_h
 
+#include "vtkOpenGLState.h" // for Drawing
 #include "vtkSmartPointer.h"
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
-class vtkOpenGLState;
+class vtkRenderer;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -27,6 +28,27 @@ public:
   void Unbind(vtkOpenGLState* state);
 
   vtkTextureObject* GetColorTexture() const;
+
+  // For its lifetime: the target sized to the renderer's viewport and bound, depth test on with
+  // depth writes, blending off; then everything it changed is put back.
+  class Drawing
+  {
+  public:
+    Drawing(vtkIceScreenTarget& target, vtkRenderer* renderer, int components);
+    ~Drawing();
+    vtkOpenGLState* State;
+
+  private:
+    vtkIceScreenTarget& Target;
+    vtkOpenGLState::ScopedglViewport Viewport;
+    vtkOpenGLState::ScopedglScissor Scissor;
+    vtkOpenGLState::ScopedglClearColor ClearColor;
+    vtkOpenGLState::ScopedglColorMask ColorMask;
+    vtkOpenGLState::ScopedglDepthMask DepthMask;
+    vtkOpenGLState::ScopedglDepthFunc DepthFunc;
+    vtkOpenGLState::ScopedglEnableDisable DepthTest;
+    vtkOpenGLState::ScopedglEnableDisable Blend;
+  };
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
