@@ -5,6 +5,8 @@
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceDebugDepthFS.h"
+#include "vtkIceGlistening.h"
+#include "vtkIceGlisteningTexture.h"
 #include "vtkIceNoise.h"
 #include "vtkIceOptics.h"
 #include "vtkIceShaderSections.h"
@@ -46,7 +48,8 @@ namespace
 enum ShaderParts
 {
   TwoSidedPart = 1,
-  DepthDebugPart = 2
+  DepthDebugPart = 2,
+  GlisteningPart = 4
 };
 const int GenericCrackModels = 3;
 }
@@ -238,6 +241,10 @@ int vtkIceMapper::ShaderVariant() const
   {
     variant |= DepthDebugPart;
   }
+  if (this->Glistening)
+  {
+    variant |= GlisteningPart;
+  }
   return variant;
 }
 
@@ -341,6 +348,10 @@ void vtkIceMapper::ReplaceIceShaderValues(
   {
     declarations += Get(vtkIceDebugDepthFS, "Dec");
   }
+  if (variant & GlisteningPart)
+  {
+    declarations += vtkIceGlistening::Declarations();
+  }
   vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", declarations));
   vtkShaderProgram::Substitute(
     fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceSurfaceFS, "Impl")));
@@ -352,10 +363,19 @@ void vtkIceMapper::ReplaceIceShaderValues(
   {
     vtkShaderProgram::Substitute(fs, "//ICEHOOK::Debug", Get(vtkIceDebugDepthFS, "Impl"));
   }
+  if (variant & GlisteningPart)
+  {
+    // The light calls follow VTK's light loop (set by the superclass's GetNeedToRebuildShaders).
+    const auto& lights = this->PrimitiveInfo[this->LastBoundBO];
+    vtkShaderProgram::Substitute(fs, "//ICEHOOK::Glistening",
+      vtkIceGlistening::Code(
+        lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount));
+  }
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor*)
+void vtkIceMapper::SetIceShaderParameters(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
 {
   if (!this->ActiveEnvironmentObject)
   {
@@ -381,6 +401,29 @@ void vtkIceMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer
       static_cast<float>(this->DepthRange[1]) };
     program->SetUniform2f("iceDepthRange", range);
     program->SetUniformi("iceDebugChannel", this->DebugView == DebugFrontDepth ? 0 : 1);
+  }
+  if (variant & GlisteningPart)
+  {
+    if (!this->GlisteningNoise)
+    {
+      this->GlisteningNoise = vtkSmartPointer<vtkIceGlisteningTexture>::New();
+    }
+    vtkTextureObject* noise = this->GlisteningNoise->GetTextureObject(
+      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()));
+    noise->Activate();
+    // Deactivated after the draw with the screen textures.
+    if (std::find(this->BoundScreenTextures.begin(), this->BoundScreenTextures.end(), noise) ==
+      this->BoundScreenTextures.end())
+    {
+      this->BoundScreenTextures.push_back(noise);
+    }
+    vtkIceGlistening::Parameters parameters;
+    parameters.Scale = this->GlisteningScale;
+    parameters.Intensity = this->GlisteningIntensity;
+    parameters.AlignmentGain = this->GlisteningAlignmentGain;
+    parameters.SnowAmount = this->SnowAmount;
+    parameters.NoiseTextureUnit = noise->GetTextureUnit();
+    vtkIceGlistening::SetUniforms(program, ren, act, parameters);
   }
 }
 
@@ -484,6 +527,10 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
     this->FallbackEnvironment->ReleaseGraphicsResources(win);
   }
   this->Cracks->Mapper->ReleaseGraphicsResources(win);
+  if (this->GlisteningNoise)
+  {
+    this->GlisteningNoise->ReleaseGraphicsResources(win);
+  }
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
@@ -505,4 +552,9 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CracksPerturbRefraction: " << (this->CracksPerturbRefraction ? "On" : "Off")
      << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
+  os << indent << "Glistening: " << (this->Glistening ? "On" : "Off") << "\n";
+  os << indent << "SnowAmount: " << this->SnowAmount << "\n";
+  os << indent << "GlisteningScale: " << this->GlisteningScale << "\n";
+  os << indent << "GlisteningIntensity: " << this->GlisteningIntensity << "\n";
+  os << indent << "GlisteningAlignmentGain: " << this->GlisteningAlignmentGain << "\n";
 }
