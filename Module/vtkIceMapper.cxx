@@ -8,6 +8,8 @@
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceDebugDepthFS.h"
+#include "vtkIceGlistening.h"
+#include "vtkIceGlisteningTexture.h"
 #include "vtkIceNoise.h"
 #include "vtkIceOptics.h"
 #include "vtkIceShaderSections.h"
@@ -61,7 +63,8 @@ enum ShaderParts
   TwoSidedPart = 1,
   DepthDebugPart = 2,
   BumpPart = 4,
-  NormalMapPart = 8
+  NormalMapPart = 8,
+  GlisteningPart = 16
 };
 
 enum class Overlay
@@ -474,6 +477,10 @@ int vtkIceMapper::ShaderVariant() const
   {
     variant |= this->NormalMap ? NormalMapPart : BumpPart;
   }
+  if (this->Glistening)
+  {
+    variant |= GlisteningPart;
+  }
   return variant;
 }
 
@@ -593,6 +600,10 @@ void vtkIceMapper::ReplaceIceShaderValues(
   {
     declarations += Get(vtkIceNormalMapFS, "Dec");
   }
+  if (variant & GlisteningPart)
+  {
+    declarations += vtkIceGlistening::Declarations();
+  }
   vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", declarations));
   vtkShaderProgram::Substitute(
     fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceSurfaceFS, "Impl")));
@@ -609,10 +620,19 @@ void vtkIceMapper::ReplaceIceShaderValues(
     vtkShaderProgram::Substitute(fs, "//ICEHOOK::SurfaceNormal",
       Get(variant & BumpPart ? vtkIceBumpFS : vtkIceNormalMapFS, "Impl"));
   }
+  if (variant & GlisteningPart)
+  {
+    // The light calls follow VTK's light loop (set by the superclass's GetNeedToRebuildShaders).
+    const auto& lights = this->PrimitiveInfo[this->LastBoundBO];
+    vtkShaderProgram::Substitute(fs, "//ICEHOOK::Glistening",
+      vtkIceGlistening::Code(
+        lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount));
+  }
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor*)
+void vtkIceMapper::SetIceShaderParameters(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
 {
   if (!this->ActiveEnvironmentObject)
   {
@@ -648,6 +668,29 @@ void vtkIceMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer
   if (variant & NormalMapPart)
   {
     program->SetUniformi("iceNormalMap", this->NormalMap->GetTextureUnit());
+  }
+  if (variant & GlisteningPart)
+  {
+    if (!this->GlisteningNoise)
+    {
+      this->GlisteningNoise = vtkSmartPointer<vtkIceGlisteningTexture>::New();
+    }
+    vtkTextureObject* noise = this->GlisteningNoise->GetTextureObject(
+      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()));
+    noise->Activate();
+    // Deactivated after the draw with the screen textures.
+    if (std::find(this->BoundScreenTextures.begin(), this->BoundScreenTextures.end(), noise) ==
+      this->BoundScreenTextures.end())
+    {
+      this->BoundScreenTextures.push_back(noise);
+    }
+    vtkIceGlistening::Parameters parameters;
+    parameters.Scale = this->GlisteningScale;
+    parameters.Intensity = this->GlisteningIntensity;
+    parameters.AlignmentGain = this->GlisteningAlignmentGain;
+    parameters.SnowAmount = this->SnowAmount;
+    parameters.NoiseTextureUnit = noise->GetTextureUnit();
+    vtkIceGlistening::SetUniforms(program, ren, act, parameters);
   }
 }
 
@@ -756,6 +799,10 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
   }
   this->Cracks->Mapper->ReleaseGraphicsResources(win);
   this->Air->Mapper->ReleaseGraphicsResources(win);
+  if (this->GlisteningNoise)
+  {
+    this->GlisteningNoise->ReleaseGraphicsResources(win);
+  }
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
@@ -783,4 +830,9 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BumpScale: " << this->BumpScale << "\n";
   os << indent << "NormalMap: " << this->NormalMap.Get() << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
+  os << indent << "Glistening: " << (this->Glistening ? "On" : "Off") << "\n";
+  os << indent << "SnowAmount: " << this->SnowAmount << "\n";
+  os << indent << "GlisteningScale: " << this->GlisteningScale << "\n";
+  os << indent << "GlisteningIntensity: " << this->GlisteningIntensity << "\n";
+  os << indent << "GlisteningAlignmentGain: " << this->GlisteningAlignmentGain << "\n";
 }

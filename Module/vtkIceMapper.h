@@ -35,6 +35,7 @@
 
 class vtkActor;
 class vtkIceCrackMapper;
+class vtkIceGlisteningTexture;
 class vtkProp;
 class vtkTexture;
 class vtkTextureObject;
@@ -190,6 +191,54 @@ public:
   vtkTexture* GetNormalMap();
   ///@}
 
+  ///@{
+  /**
+   * Glistening ice and snow (Liquidiced): direct light from the scene's lights (Phong with a
+   * broad, soft specular on a subtle wavy bump), rim light, and two layers of crack glints (one
+   * roughly parallel to the surface, one of any orientation) from a random normal texture, crisp
+   * at any distance. Added to the ice; with SnowAmount 1 the surface is snow instead. Default off.
+   */
+  vtkSetMacro(Glistening, bool);
+  vtkGetMacro(Glistening, bool);
+  vtkBooleanMacro(Glistening, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With Glistening: size of a crack cell in the input's units. Default 0.03; clamped to
+   * [1e-6, 1e6].
+   */
+  vtkSetClampMacro(GlisteningScale, double, 1.0e-6, 1.0e6);
+  vtkGetMacro(GlisteningScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * With Glistening: brightness of the glints. Default 1; clamped to [0, 100].
+   */
+  vtkSetClampMacro(GlisteningIntensity, double, 0.0, 100.0);
+  vtkGetMacro(GlisteningIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * With Glistening: gain of the glints where the view looks along a light's direction (the light
+   * behind the viewer), where the surface specular and the parallel crack layer are missing.
+   * Default 2 (doubled, as in Liquidiced); 1 turns the intensification off. Clamped to [1, 10].
+   */
+  vtkSetClampMacro(GlisteningAlignmentGain, double, 1.0, 10.0);
+  vtkGetMacro(GlisteningAlignmentGain, double);
+  ///@}
+
+  ///@{
+  /**
+   * With Glistening: 0 gives ice, 1 snow (white, diffuse), values between blend the two looks.
+   * Default 0; clamped to [0, 1].
+   */
+  vtkSetClampMacro(SnowAmount, double, 0.0, 1.0);
+  vtkGetMacro(SnowAmount, double);
+  ///@}
+
   enum DebugViews
   {
     DebugOff = 0,
@@ -271,7 +320,7 @@ protected:
   void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  // Which optional shader parts the next build includes (two-sided, depth debug view).
+  // Which optional shader parts the next build includes (two-sided, depth debug view, glistening).
   int ShaderVariant() const;
 
   // The cube map the ice samples: the prop's dynamic cube map, the renderer's environment texture
@@ -298,6 +347,12 @@ protected:
   vtkSmartPointer<vtkTexture> NormalMap;
   double DepthRange[2] = { 0.0, 1.0 };
   vtkIdType NumberOfCrackDraws = 0;
+  bool Glistening = false;
+  double SnowAmount = 0.0;
+  double GlisteningScale = 0.03;
+  double GlisteningIntensity = 1.0;
+  double GlisteningAlignmentGain = 2.0;
+  vtkSmartPointer<vtkIceGlisteningTexture> GlisteningNoise;
 
   vtkSmartPointer<vtkTextureObject> BackfaceNormalTexture;
   vtkSmartPointer<vtkTextureObject> DepthIntervalTexture;

@@ -1,0 +1,38 @@
+// The glistening layer of vtkIceMapper (Liquidiced's ice and snow): composes its fragment shader
+// code for VTK's lights and sets its uniforms. Private to the module.
+#ifndef vtkIceGlistening_h
+#define vtkIceGlistening_h
+
+#include <string>
+
+class vtkActor;
+class vtkRenderer;
+class vtkShaderProgram;
+
+namespace vtkIceGlistening
+{
+// Declarations to append to the ice fragment shader's.
+std::string Declarations();
+
+// The code for the hook //ICEHOOK::Glistening of the ice fragment shader: one light call per light
+// of VTK's light loop for `lightComplexity` (0: no lighting, 1: headlight, 2: directional lights,
+// 3: positional lights) and `lightCount`, reading VTK's light uniforms (lightColor0,
+// lightDirectionVC0, ...).
+std::string Code(int lightComplexity, int lightCount);
+
+struct Parameters
+{
+  double Scale = 0.03;
+  double Intensity = 1.0;
+  double AlignmentGain = 2.0;
+  double SnowAmount = 0.0;
+  int NoiseTextureUnit = 0;
+};
+
+// Sets the layer's uniforms: the parameters, world to model for `actor`, view to world for the
+// renderer's camera.
+void SetUniforms(
+  vtkShaderProgram* program, vtkRenderer* renderer, vtkActor* actor, const Parameters& parameters);
+}
+
+#endif
