@@ -473,6 +473,9 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
     mapper->Render(ren, crackActor);
   }
   crackActor->SetPropertyKeys(nullptr);
+  // The texture belongs to the pass and lives for this frame only: holding it would keep it
+  // (and its GL texture) alive after the pass is released or deleted.
+  mapper->SetDepthIntervalTexture(nullptr);
   ++this->NumberOfCrackDraws;
 }
 
