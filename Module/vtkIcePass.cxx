@@ -12,6 +12,7 @@
 #include "vtkTranslucentPass.h"
 #include "vtkFrameBufferObjectBase.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
@@ -20,6 +21,34 @@
 #include "vtkRenderer.h"
 
 #include <vector>
+
+namespace
+{
+// VTK 9.1's vtkOrderIndependentTranslucentPass creates its final blend (a vtkOpenGLQuadHelper
+// with a vertex array object) on first use and deletes it only in ReleaseGraphicsResources, not
+// in its destructor: a pass deleted without that call leaks the helper and its vertex array.
+// vtkIcePass owns one, and applications drop passes without releasing them (vtkRenderer::SetPass
+// does not release the old pass either), so the one vtkIcePass uses deletes it when it dies.
+class vtkIceOrderIndependentTranslucentPass : public vtkOrderIndependentTranslucentPass
+{
+public:
+  static vtkIceOrderIndependentTranslucentPass* New();
+  vtkTypeMacro(vtkIceOrderIndependentTranslucentPass, vtkOrderIndependentTranslucentPass);
+
+protected:
+  vtkIceOrderIndependentTranslucentPass() = default;
+  ~vtkIceOrderIndependentTranslucentPass() override
+  {
+    delete this->FinalBlend;
+    this->FinalBlend = nullptr;
+  }
+
+private:
+  vtkIceOrderIndependentTranslucentPass(const vtkIceOrderIndependentTranslucentPass&) = delete;
+  void operator=(const vtkIceOrderIndependentTranslucentPass&) = delete;
+};
+vtkStandardNewMacro(vtkIceOrderIndependentTranslucentPass);
+}
 
 vtkStandardNewMacro(vtkIcePass);
 vtkCxxSetObjectMacro(vtkIcePass, DelegatePass, vtkRenderPass);
@@ -32,7 +61,7 @@ vtkIcePass::vtkIcePass()
   this->SetDelegatePass(this->DefaultDelegate);
 
   vtkNew<vtkTranslucentPass> translucent;
-  vtkOrderIndependentTranslucentPass* oit = vtkOrderIndependentTranslucentPass::New();
+  vtkOrderIndependentTranslucentPass* oit = vtkIceOrderIndependentTranslucentPass::New();
   oit->SetTranslucentPass(translucent);
   this->OrderIndependentTranslucency = oit;
   vtkDualDepthPeelingPass* peeling = vtkDualDepthPeelingPass::New();
