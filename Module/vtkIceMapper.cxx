@@ -16,6 +16,7 @@
 #include "vtkAppendPolyData.h"
 #include "vtkClipPolyData.h"
 #include "vtkDoubleArray.h"
+#include "vtkImageData.h"
 #include "vtkImplicitPolyDataDistance.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
@@ -49,6 +50,31 @@ enum ShaderParts
   DepthDebugPart = 2
 };
 const int GenericCrackModels = 3;
+
+// Whether every face of a cube-map texture has an image. A reader that failed (missing or
+// corrupt files) gives empty faces: bound anyway, the texture reports an error every frame and
+// the ice samples an incomplete texture (GL_INVALID_VALUE for its sampler).
+bool HasFaceImages(vtkTexture* texture)
+{
+  for (int port = 0; port < texture->GetNumberOfInputPorts(); ++port)
+  {
+    int outputPort = 0;
+    vtkAlgorithm* producer = texture->GetNumberOfInputConnections(port) > 0
+      ? texture->GetInputAlgorithm(port, 0, outputPort)
+      : nullptr;
+    if (!producer)
+    {
+      return false;
+    }
+    producer->Update(outputPort);
+    vtkImageData* face = vtkImageData::SafeDownCast(producer->GetOutputDataObject(outputPort));
+    if (!face || face->GetNumberOfPoints() == 0 || !face->GetPointData()->GetScalars())
+    {
+      return false;
+    }
+  }
+  return true;
+}
 }
 
 // The crack surfaces of one ice mapper: their geometry (cached) and what draws it.
@@ -256,14 +282,17 @@ bool vtkIceMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer*
 vtkTexture* vtkIceMapper::SelectEnvironment(vtkRenderer* ren)
 {
   vtkTexture* env = ren->GetEnvironmentTexture();
-  if (env && env->GetCubeMap())
+  const bool cubeMap = env && env->GetCubeMap();
+  if (cubeMap && HasFaceImages(env))
   {
     return env;
   }
   if (!this->WarnedNoEnvironment)
   {
-    vtkWarningMacro(<< (env ? "The renderer's environment texture is not a cube map"
-                            : "The renderer has no environment texture")
+    vtkWarningMacro(<< (!env          ? "The renderer has no environment texture"
+                           : !cubeMap ? "The renderer's environment texture is not a cube map"
+                                      : "The renderer's environment cube map has faces without "
+                                        "an image (did its reader fail?)")
                     << "; the ice reflects a built-in sky. Set a vtkTexture with CubeMapOn() "
                        "with vtkRenderer::SetEnvironmentTexture.");
     this->WarnedNoEnvironment = true;
