@@ -51,6 +51,27 @@ enum ShaderParts
 };
 const int GenericCrackModels = 3;
 
+// Clamps `value` to [low, high] into `member` as vtkSetClampMacro does, but refuses NaN (which
+// the macro would store: every comparison with NaN is false) with a warning naming the
+// parameter. Returns whether `member` changed.
+bool SetClamped(vtkObject* self, const char* name, double value, double low, double high,
+  double& member)
+{
+  if (std::isnan(value))
+  {
+    vtkWarningWithObjectMacro(
+      self, << "Set" << name << "(NaN) ignored: " << name << " stays " << member << ".");
+    return false;
+  }
+  const double clamped = std::min(std::max(value, low), high);
+  if (clamped == member)
+  {
+    return false;
+  }
+  member = clamped;
+  return true;
+}
+
 // Whether every face of a cube-map texture has an image. A reader that failed (missing or
 // corrupt files) gives empty faces: bound anyway, the texture reports an error every frame and
 // the ice samples an incomplete texture (GL_INVALID_VALUE for its sampler).
@@ -217,6 +238,68 @@ vtkIceMapper::vtkIceMapper()
 vtkIceMapper::~vtkIceMapper()
 {
   delete this->Cracks;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetRefractionRatio(double eta)
+{
+  if (SetClamped(this, "RefractionRatio", eta, this->GetRefractionRatioMinValue(),
+        this->GetRefractionRatioMaxValue(), this->RefractionRatio))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetFresnelPower(double power)
+{
+  if (SetClamped(this, "FresnelPower", power, this->GetFresnelPowerMinValue(),
+        this->GetFresnelPowerMaxValue(), this->FresnelPower))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetBackNormalWeight(double weight)
+{
+  if (SetClamped(this, "BackNormalWeight", weight, this->GetBackNormalWeightMinValue(),
+        this->GetBackNormalWeightMaxValue(), this->BackNormalWeight))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetCrackIntensity(double intensity)
+{
+  if (SetClamped(this, "CrackIntensity", intensity, this->GetCrackIntensityMinValue(),
+        this->GetCrackIntensityMaxValue(), this->CrackIntensity))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetIceColor(double red, double green, double blue)
+{
+  if (std::isnan(red) || std::isnan(green) || std::isnan(blue))
+  {
+    vtkWarningMacro(<< "SetIceColor(" << red << ", " << green << ", " << blue
+                    << ") ignored: a component is NaN; IceColor stays (" << this->IceColor[0]
+                    << ", " << this->IceColor[1] << ", " << this->IceColor[2] << ").");
+    return;
+  }
+  bool changed = false;
+  const double color[3] = { red, green, blue };
+  for (int i = 0; i < 3; ++i)
+  {
+    changed = SetClamped(this, "IceColor", color[i], 0.0, 1.0, this->IceColor[i]) || changed;
+  }
+  if (changed)
+  {
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -46,27 +46,36 @@ public:
   ///@{
   /**
    * Ratio of refraction indices, from / to (eta of eq 2). Default air/ice 1.0003/1.3091.
-   * Clamped to [0.05, 20]; a value of 1 lets rays pass undeflected.
+   * Clamped to [0.05, 20]; a value of 1 lets rays pass undeflected. NaN is refused with a
+   * warning (this and the other floating-point parameters clamp as vtkSetClampMacro does, which
+   * would store NaN).
    */
-  vtkSetClampMacro(RefractionRatio, double, 0.05, 20.0);
+  virtual void SetRefractionRatio(double eta);
+  virtual double GetRefractionRatioMinValue() { return 0.05; }
+  virtual double GetRefractionRatioMaxValue() { return 20.0; }
   vtkGetMacro(RefractionRatio, double);
   ///@}
 
   ///@{
   /**
    * Exponent of the Fresnel approximation f = (1 - |e.n|)^P (eq 4). Default 3.
-   * Larger values show less reflection away from the silhouette. Clamped to [0, 1e6].
+   * Larger values show less reflection away from the silhouette. Clamped to [0, 1e6]; NaN is
+   * refused with a warning.
    */
-  vtkSetClampMacro(FresnelPower, double, 0.0, 1.0e6);
+  virtual void SetFresnelPower(double power);
+  virtual double GetFresnelPowerMinValue() { return 0.0; }
+  virtual double GetFresnelPowerMaxValue() { return 1.0e6; }
   vtkGetMacro(FresnelPower, double);
   ///@}
 
   ///@{
   /**
    * Weight a of the back-face normal in the blended refraction normal (eq 1). Default 0.33.
-   * Used by two-sided refraction; clamped to [0, 1].
+   * Used by two-sided refraction; clamped to [0, 1]; NaN is refused with a warning.
    */
-  vtkSetClampMacro(BackNormalWeight, double, 0.0, 1.0);
+  virtual void SetBackNormalWeight(double weight);
+  virtual double GetBackNormalWeightMinValue() { return 0.0; }
+  virtual double GetBackNormalWeightMaxValue() { return 1.0; }
   vtkGetMacro(BackNormalWeight, double);
   ///@}
 
@@ -82,9 +91,14 @@ public:
 
   ///@{
   /**
-   * Tint multiplied into the ice colour, each component in [0, 1]. Default white.
+   * Tint multiplied into the ice colour, each component clamped to [0, 1]. Default white. A
+   * colour with a NaN component is refused with a warning.
    */
-  vtkSetVector3Macro(IceColor, double);
+  virtual void SetIceColor(double red, double green, double blue);
+  virtual void SetIceColor(const double color[3])
+  {
+    this->SetIceColor(color[0], color[1], color[2]);
+  }
   vtkGetVector3Macro(IceColor, double);
   ///@}
 
@@ -107,9 +121,12 @@ public:
 
   ///@{
   /**
-   * Brightness of the cracks' highlights. Default 1.
+   * Brightness of the cracks' highlights. Default 1. Clamped to [0, 100]; NaN is refused with a
+   * warning.
    */
-  vtkSetClampMacro(CrackIntensity, double, 0.0, 100.0);
+  virtual void SetCrackIntensity(double intensity);
+  virtual double GetCrackIntensityMinValue() { return 0.0; }
+  virtual double GetCrackIntensityMaxValue() { return 100.0; }
   vtkGetMacro(CrackIntensity, double);
   ///@}
 
