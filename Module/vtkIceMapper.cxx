@@ -8,6 +8,7 @@
 #include "vtkIceNoise.h"
 #include "vtkIceOptics.h"
 #include "vtkIceShaderSections.h"
+#include "vtkIceSurfaceCheck.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
 #include "vtkIceTwoSidedFS.h"
@@ -54,8 +55,8 @@ const int GenericCrackModels = 3;
 // Clamps `value` to [low, high] into `member` as vtkSetClampMacro does, but refuses NaN (which
 // the macro would store: every comparison with NaN is false) with a warning naming the
 // parameter. Returns whether `member` changed.
-bool SetClamped(vtkObject* self, const char* name, double value, double low, double high,
-  double& member)
+bool SetClamped(
+  vtkObject* self, const char* name, double value, double low, double high, double& member)
 {
   if (std::isnan(value))
   {
@@ -512,8 +513,53 @@ vtkPolyData* vtkIceMapper::GetCrackGeometry()
   {
     return nullptr;
   }
-  return this->Cracks->Update(
-    this->PreparedInput, this->NumberOfCracks, this->CrackSeed, this->CrackClipping);
+  // Ice without volume has no inside to hold cracks.
+  const int cracks = this->InputFlat ? 0 : this->NumberOfCracks;
+  return this->Cracks->Update(this->PreparedInput, cracks, this->CrackSeed,
+    cracks > 0 ? this->UsableCrackClipping() : DepthInterval);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::InputPrepared()
+{
+  this->Superclass::InputPrepared();
+  double thickness;
+  double size;
+  vtkIceSurfaceCheck::Extents(this->PreparedInput->GetPoints(), thickness, size);
+  this->InputFlat = vtkIceSurfaceCheck::IsFlat(thickness, size);
+  this->InputOpenEdges = -1;
+  this->WarnedOpenInput = false;
+  if (this->InputFlat)
+  {
+    vtkWarningMacro(<< "Input is flat (thickness " << thickness << " for a size of " << size
+                    << "): ice without volume has no inside; it is drawn as a surface, without "
+                       "cracks.");
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkIceMapper::UsableCrackClipping()
+{
+  if (this->CrackClipping != Geometry)
+  {
+    return this->CrackClipping;
+  }
+  if (this->InputOpenEdges < 0)
+  {
+    this->InputOpenEdges = vtkIceSurfaceCheck::CountOpenEdges(this->PreparedInput);
+  }
+  if (this->InputOpenEdges == 0)
+  {
+    return Geometry;
+  }
+  if (!this->WarnedOpenInput)
+  {
+    vtkWarningMacro(<< "Input is not a closed surface (" << this->InputOpenEdges
+                    << " open edges): Geometry crack clipping needs an inside; its cracks are "
+                       "clipped to the depth interval instead.");
+    this->WarnedOpenInput = true;
+  }
+  return DepthInterval;
 }
 
 //------------------------------------------------------------------------------
@@ -539,7 +585,7 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
   vtkIceCrackMapper* mapper = this->Cracks->Mapper;
   const bool unclipped = this->DebugView == DebugCracksUnclipped;
   mapper->SetDepthIntervalTexture(this->DepthIntervalTexture);
-  mapper->SetClipToInterval(this->CrackClipping == DepthInterval && !unclipped);
+  mapper->SetClipToInterval(this->UsableCrackClipping() == DepthInterval && !unclipped);
   mapper->SetDebugColor(debugCracks);
   mapper->SetIntensity(this->CrackIntensity);
   mapper->SetBumpFrequency(8.0 / std::max(extent, 1e-12));

@@ -20,7 +20,10 @@
  * depth interval or once on the CPU (CrackClipping).
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
- * without polygons or with non-finite points are reported with an error and not drawn.
+ * without polygons or with non-finite points are reported with an error and not drawn. Flat
+ * input (all points in one plane: no volume, no inside) is drawn as a surface without cracks,
+ * with one warning. Open surfaces are drawn as they are; Geometry crack clipping needs a closed
+ * one and falls back to the depth interval, with one warning.
  */
 #ifndef vtkIceMapper_h
 #define vtkIceMapper_h
@@ -138,7 +141,8 @@ public:
 
   ///@{
   /**
-   * How cracks are kept inside the ice. Default DepthInterval.
+   * How cracks are kept inside the ice. Default DepthInterval. Geometry needs a closed surface:
+   * for an open one (a warning says so) the cracks are clipped to the depth interval.
    */
   vtkSetClampMacro(CrackClipping, int, DepthInterval, Geometry);
   vtkGetMacro(CrackClipping, int);
@@ -233,6 +237,13 @@ protected:
   // Which optional shader parts the next build includes (two-sided, depth debug view).
   int ShaderVariant() const;
 
+  // Looks at a new input: flat input (no volume, hence no inside) gets no cracks.
+  void InputPrepared() override;
+
+  // The crack clipping the input allows: Geometry needs a closed surface (the inside is found by
+  // ray casting); an open one is clipped to the depth interval instead, with one warning.
+  int UsableCrackClipping();
+
   // The cube map the ice samples: the prop's dynamic cube map, the renderer's environment texture
   // or the built-in sky. Binds it and returns it.
   vtkTextureObject* BindEnvironment(vtkRenderer* ren, vtkActor* act);
@@ -263,6 +274,11 @@ protected:
 
   class vtkCracks;
   vtkCracks* Cracks;
+
+  // What InputPrepared and UsableCrackClipping found about the current input.
+  bool InputFlat = false;
+  vtkIdType InputOpenEdges = -1; // counted when Geometry clipping first needs it
+  bool WarnedOpenInput = false;
 
 private:
   vtkIceMapper(const vtkIceMapper&) = delete;
