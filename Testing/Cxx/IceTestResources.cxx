@@ -1,5 +1,6 @@
 #include "IceTestResources.h"
 
+#include "vtkLogger.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkRenderWindow.h"
@@ -68,39 +69,61 @@ public:
   {
     ++this->Errors;
     this->Last = text ? text : "";
-    this->Superclass::DisplayErrorText(text);
+    if (!this->Quiet)
+    {
+      this->Superclass::DisplayErrorText(text);
+    }
   }
   void DisplayWarningText(const char* text) override
   {
     ++this->Warnings;
     this->Last = text ? text : "";
-    this->Superclass::DisplayWarningText(text);
+    if (!this->Quiet)
+    {
+      this->Superclass::DisplayWarningText(text);
+    }
   }
   void DisplayGenericWarningText(const char* text) override
   {
     ++this->Warnings;
     this->Last = text ? text : "";
-    this->Superclass::DisplayGenericWarningText(text);
+    if (!this->Quiet)
+    {
+      this->Superclass::DisplayGenericWarningText(text);
+    }
   }
   int Errors = 0;
   int Warnings = 0;
+  bool Quiet = false;
   std::string Last;
 };
 vtkStandardNewMacro(CountingOutputWindow);
 
 vtkSmartPointer<CountingOutputWindow> Counter;
 vtkSmartPointer<vtkOutputWindow> PreviousOutput;
+vtkLogger::Verbosity PreviousVerbosity = vtkLogger::VERBOSITY_INFO;
 }
 
-void MessageCounter::Install()
+void MessageCounter::Install(bool quiet)
 {
   PreviousOutput = vtkOutputWindow::GetInstance();
   Counter = vtkSmartPointer<CountingOutputWindow>::New();
+  Counter->Quiet = quiet;
   vtkOutputWindow::SetInstance(Counter);
+  if (quiet)
+  {
+    // VTK also logs errors and warnings to stderr through vtkLogger.
+    PreviousVerbosity = vtkLogger::GetCurrentVerbosityCutoff();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
 }
 
 void MessageCounter::Uninstall()
 {
+  if (Counter && Counter->Quiet)
+  {
+    vtkLogger::SetStderrVerbosity(PreviousVerbosity);
+  }
   vtkOutputWindow::SetInstance(PreviousOutput);
   PreviousOutput = nullptr;
 }

@@ -36,12 +36,13 @@ struct GLCensus
 };
 GLCensus TakeGLCensus(vtkRenderWindow* window);
 
-// Counts every VTK error and warning of the process (vtkOutputWindow), still printing them.
-// Install() makes it VTK's output window until Uninstall().
+// Counts every VTK error and warning of the process (vtkOutputWindow). Install() makes it VTK's
+// output window until Uninstall(); with `quiet` the messages are not printed (nor logged by
+// vtkLogger), for tests that expect them.
 class MessageCounter
 {
 public:
-  void Install();
+  void Install(bool quiet = false);
   void Uninstall();
   int Errors() const;
   int Warnings() const;
