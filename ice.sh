@@ -2,6 +2,7 @@
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
+#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~9 min)
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
 # run again through EGL with no DISPLAY at all (Documentation/headless.md).
@@ -43,8 +44,13 @@ case "$command" in
       ctest --test-dir "$build_dir" --output-on-failure -L backend "$@" || status=1
     exit "$status"
     ;;
+  soak)
+    build
+    exec Testing/Scripts/soak.sh "$@"
+    ;;
   *)
-    echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" >&2
+    echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
+      "| ./ice.sh soak [frames] [seed]" >&2
     exit 2
     ;;
 esac

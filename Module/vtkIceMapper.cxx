@@ -13,6 +13,7 @@
 #include "vtkIceNoise.h"
 #include "vtkIceOptics.h"
 #include "vtkIceShaderSections.h"
+#include "vtkIceSurfaceCheck.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
 #include "vtkIceNormalMapFS.h"
@@ -29,6 +30,7 @@
 #include "vtkPoints.h"
 #include "vtkClipPolyData.h"
 #include "vtkDoubleArray.h"
+#include "vtkImageData.h"
 #include "vtkImplicitPolyDataDistance.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
@@ -143,6 +145,52 @@ vtkSmartPointer<vtkTransform> RandomPlacement(std::uint32_t sequence, int index,
   const double scale = extent * (minScale + (maxScale - minScale) * u[6]);
   placement->Scale(scale, scale, scale);
   return placement;
+}
+
+// Clamps `value` to [low, high] into `member` as vtkSetClampMacro does, but refuses NaN (which
+// the macro would store: every comparison with NaN is false) with a warning naming the
+// parameter. Returns whether `member` changed.
+bool SetClamped(
+  vtkObject* self, const char* name, double value, double low, double high, double& member)
+{
+  if (std::isnan(value))
+  {
+    vtkWarningWithObjectMacro(
+      self, << "Set" << name << "(NaN) ignored: " << name << " stays " << member << ".");
+    return false;
+  }
+  const double clamped = std::min(std::max(value, low), high);
+  if (clamped == member)
+  {
+    return false;
+  }
+  member = clamped;
+  return true;
+}
+
+// Whether every face of a cube-map texture has an image. A reader that failed (missing or
+// corrupt files) gives empty faces: bound anyway, the texture reports an error every frame and
+// the ice samples an incomplete texture (GL_INVALID_VALUE for its sampler).
+bool HasFaceImages(vtkTexture* texture)
+{
+  for (int port = 0; port < texture->GetNumberOfInputPorts(); ++port)
+  {
+    int outputPort = 0;
+    vtkAlgorithm* producer = texture->GetNumberOfInputConnections(port) > 0
+      ? texture->GetInputAlgorithm(port, 0, outputPort)
+      : nullptr;
+    if (!producer)
+    {
+      return false;
+    }
+    producer->Update(outputPort);
+    vtkImageData* face = vtkImageData::SafeDownCast(producer->GetOutputDataObject(outputPort));
+    if (!face || face->GetNumberOfPoints() == 0 || !face->GetPointData()->GetScalars())
+    {
+      return false;
+    }
+  }
+  return true;
 }
 }
 
@@ -429,6 +477,131 @@ double vtkIceMapper::InputExtent()
 }
 
 //------------------------------------------------------------------------------
+void vtkIceMapper::SetRefractionRatio(double eta)
+{
+  if (SetClamped(this, "RefractionRatio", eta, this->GetRefractionRatioMinValue(),
+        this->GetRefractionRatioMaxValue(), this->RefractionRatio))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetFresnelPower(double power)
+{
+  if (SetClamped(this, "FresnelPower", power, this->GetFresnelPowerMinValue(),
+        this->GetFresnelPowerMaxValue(), this->FresnelPower))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetBackNormalWeight(double weight)
+{
+  if (SetClamped(this, "BackNormalWeight", weight, this->GetBackNormalWeightMinValue(),
+        this->GetBackNormalWeightMaxValue(), this->BackNormalWeight))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetCrackIntensity(double intensity)
+{
+  if (SetClamped(this, "CrackIntensity", intensity, this->GetCrackIntensityMinValue(),
+        this->GetCrackIntensityMaxValue(), this->CrackIntensity))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetMilkiness(double milkiness)
+{
+  if (SetClamped(this, "Milkiness", milkiness, this->GetMilkinessMinValue(), this->GetMilkinessMaxValue(), this->Milkiness))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetBumpStrength(double bumpStrength)
+{
+  if (SetClamped(this, "BumpStrength", bumpStrength, this->GetBumpStrengthMinValue(), this->GetBumpStrengthMaxValue(), this->BumpStrength))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetBumpScale(double bumpScale)
+{
+  if (SetClamped(this, "BumpScale", bumpScale, this->GetBumpScaleMinValue(), this->GetBumpScaleMaxValue(), this->BumpScale))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetGlisteningScale(double glisteningScale)
+{
+  if (SetClamped(this, "GlisteningScale", glisteningScale, this->GetGlisteningScaleMinValue(), this->GetGlisteningScaleMaxValue(), this->GlisteningScale))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetGlisteningIntensity(double glisteningIntensity)
+{
+  if (SetClamped(this, "GlisteningIntensity", glisteningIntensity, this->GetGlisteningIntensityMinValue(), this->GetGlisteningIntensityMaxValue(), this->GlisteningIntensity))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetGlisteningAlignmentGain(double glisteningAlignmentGain)
+{
+  if (SetClamped(this, "GlisteningAlignmentGain", glisteningAlignmentGain, this->GetGlisteningAlignmentGainMinValue(), this->GetGlisteningAlignmentGainMaxValue(), this->GlisteningAlignmentGain))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetSnowAmount(double snowAmount)
+{
+  if (SetClamped(this, "SnowAmount", snowAmount, this->GetSnowAmountMinValue(), this->GetSnowAmountMaxValue(), this->SnowAmount))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetIceColor(double red, double green, double blue)
+{
+  if (std::isnan(red) || std::isnan(green) || std::isnan(blue))
+  {
+    vtkWarningMacro(<< "SetIceColor(" << red << ", " << green << ", " << blue
+                    << ") ignored: a component is NaN; IceColor stays (" << this->IceColor[0]
+                    << ", " << this->IceColor[1] << ", " << this->IceColor[2] << ").");
+    return;
+  }
+  bool changed = false;
+  const double color[3] = { red, green, blue };
+  for (int i = 0; i < 3; ++i)
+  {
+    changed = SetClamped(this, "IceColor", color[i], 0.0, 1.0, this->IceColor[i]) || changed;
+  }
+  if (changed)
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
@@ -499,14 +672,17 @@ bool vtkIceMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer*
 vtkTexture* vtkIceMapper::SelectEnvironment(vtkRenderer* ren)
 {
   vtkTexture* env = ren->GetEnvironmentTexture();
-  if (env && env->GetCubeMap())
+  const bool cubeMap = env && env->GetCubeMap();
+  if (cubeMap && HasFaceImages(env))
   {
     return env;
   }
   if (!this->WarnedNoEnvironment)
   {
-    vtkWarningMacro(<< (env ? "The renderer's environment texture is not a cube map"
-                            : "The renderer has no environment texture")
+    vtkWarningMacro(<< (!env          ? "The renderer has no environment texture"
+                           : !cubeMap ? "The renderer's environment texture is not a cube map"
+                                      : "The renderer's environment cube map has faces without "
+                                        "an image (did its reader fail?)")
                     << "; the ice reflects a built-in sky. Set a vtkTexture with CubeMapOn() "
                        "with vtkRenderer::SetEnvironmentTexture.");
     this->WarnedNoEnvironment = true;
@@ -710,8 +886,53 @@ vtkPolyData* vtkIceMapper::GetCrackGeometry()
   {
     return nullptr;
   }
-  return this->Cracks->Update(
-    this->PreparedInput, this->NumberOfCracks, this->CrackSeed, this->CrackClipping);
+  // Ice without volume has no inside to hold cracks.
+  const int cracks = this->InputFlat ? 0 : this->NumberOfCracks;
+  return this->Cracks->Update(this->PreparedInput, cracks, this->CrackSeed,
+    cracks > 0 ? this->UsableCrackClipping() : DepthInterval);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::InputPrepared()
+{
+  this->Superclass::InputPrepared();
+  double thickness;
+  double size;
+  vtkIceSurfaceCheck::Extents(this->PreparedInput->GetPoints(), thickness, size);
+  this->InputFlat = vtkIceSurfaceCheck::IsFlat(thickness, size);
+  this->InputOpenEdges = -1;
+  this->WarnedOpenInput = false;
+  if (this->InputFlat)
+  {
+    vtkWarningMacro(<< "Input is flat (thickness " << thickness << " for a size of " << size
+                    << "): ice without volume has no inside; it is drawn as a surface, without "
+                       "cracks.");
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkIceMapper::UsableCrackClipping()
+{
+  if (this->CrackClipping != Geometry)
+  {
+    return this->CrackClipping;
+  }
+  if (this->InputOpenEdges < 0)
+  {
+    this->InputOpenEdges = vtkIceSurfaceCheck::CountOpenEdges(this->PreparedInput);
+  }
+  if (this->InputOpenEdges == 0)
+  {
+    return Geometry;
+  }
+  if (!this->WarnedOpenInput)
+  {
+    vtkWarningMacro(<< "Input is not a closed surface (" << this->InputOpenEdges
+                    << " open edges): Geometry crack clipping needs an inside; its cracks are "
+                       "clipped to the depth interval instead.");
+    this->WarnedOpenInput = true;
+  }
+  return DepthInterval;
 }
 
 //------------------------------------------------------------------------------
@@ -733,7 +954,7 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
   vtkIceCrackMapper* mapper = this->Cracks->Mapper;
   const bool unclipped = this->DebugView == DebugCracksUnclipped;
   mapper->SetDepthIntervalTexture(this->DepthIntervalTexture);
-  mapper->SetClipToInterval(this->CrackClipping == DepthInterval && !unclipped);
+  mapper->SetClipToInterval(this->UsableCrackClipping() == DepthInterval && !unclipped);
   mapper->SetDebugColor(debugCracks);
   mapper->SetIntensity(this->CrackIntensity);
   mapper->SetBumpFrequency(8.0 / this->InputExtent());
@@ -754,6 +975,9 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
     mapper->Render(ren, crackActor);
   }
   crackActor->SetPropertyKeys(nullptr);
+  // The texture belongs to the pass and lives for this frame only: holding it would keep it
+  // (and its GL texture) alive after the pass is released or deleted.
+  mapper->SetDepthIntervalTexture(nullptr);
   ++this->NumberOfCrackDraws;
 }
 
@@ -788,6 +1012,8 @@ void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
   vtkActor* airActor = this->Air->Actor;
   airActor->SetUserMatrix(actor->GetMatrix());
   DrawOverScene(ren, mapper, airActor, debugAir ? Overlay::Opaque : Overlay::Blend, true);
+  // The texture belongs to the pass and lives for this frame only (see RenderCracks).
+  mapper->SetDepthIntervalTexture(nullptr);
 }
 
 //------------------------------------------------------------------------------

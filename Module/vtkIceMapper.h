@@ -23,7 +23,10 @@
  * optics.
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
- * without polygons or with non-finite points are reported with an error and not drawn.
+ * without polygons or with non-finite points are reported with an error and not drawn. Flat
+ * input (all points in one plane: no volume, no inside) is drawn as a surface without cracks,
+ * with one warning. Open surfaces are drawn as they are; Geometry crack clipping needs a closed
+ * one and falls back to the depth interval, with one warning.
  */
 #ifndef vtkIceMapper_h
 #define vtkIceMapper_h
@@ -50,27 +53,36 @@ public:
   ///@{
   /**
    * Ratio of refraction indices, from / to (eta of eq 2). Default air/ice 1.0003/1.3091.
-   * Clamped to [0.05, 20]; a value of 1 lets rays pass undeflected.
+   * Clamped to [0.05, 20]; a value of 1 lets rays pass undeflected. NaN is refused with a
+   * warning (this and the other floating-point parameters clamp as vtkSetClampMacro does, which
+   * would store NaN).
    */
-  vtkSetClampMacro(RefractionRatio, double, 0.05, 20.0);
+  virtual void SetRefractionRatio(double eta);
+  virtual double GetRefractionRatioMinValue() { return 0.05; }
+  virtual double GetRefractionRatioMaxValue() { return 20.0; }
   vtkGetMacro(RefractionRatio, double);
   ///@}
 
   ///@{
   /**
    * Exponent of the Fresnel approximation f = (1 - |e.n|)^P (eq 4). Default 3.
-   * Larger values show less reflection away from the silhouette. Clamped to [0, 1e6].
+   * Larger values show less reflection away from the silhouette. Clamped to [0, 1e6]; NaN is
+   * refused with a warning.
    */
-  vtkSetClampMacro(FresnelPower, double, 0.0, 1.0e6);
+  virtual void SetFresnelPower(double power);
+  virtual double GetFresnelPowerMinValue() { return 0.0; }
+  virtual double GetFresnelPowerMaxValue() { return 1.0e6; }
   vtkGetMacro(FresnelPower, double);
   ///@}
 
   ///@{
   /**
    * Weight a of the back-face normal in the blended refraction normal (eq 1). Default 0.33.
-   * Used by two-sided refraction; clamped to [0, 1].
+   * Used by two-sided refraction; clamped to [0, 1]; NaN is refused with a warning.
    */
-  vtkSetClampMacro(BackNormalWeight, double, 0.0, 1.0);
+  virtual void SetBackNormalWeight(double weight);
+  virtual double GetBackNormalWeightMinValue() { return 0.0; }
+  virtual double GetBackNormalWeightMaxValue() { return 1.0; }
   vtkGetMacro(BackNormalWeight, double);
   ///@}
 
@@ -86,9 +98,14 @@ public:
 
   ///@{
   /**
-   * Tint multiplied into the ice colour, each component in [0, 1]. Default white.
+   * Tint multiplied into the ice colour, each component clamped to [0, 1]. Default white. A
+   * colour with a NaN component is refused with a warning.
    */
-  vtkSetVector3Macro(IceColor, double);
+  virtual void SetIceColor(double red, double green, double blue);
+  virtual void SetIceColor(const double color[3])
+  {
+    this->SetIceColor(color[0], color[1], color[2]);
+  }
   vtkGetVector3Macro(IceColor, double);
   ///@}
 
@@ -111,9 +128,12 @@ public:
 
   ///@{
   /**
-   * Brightness of the cracks' highlights. Default 1.
+   * Brightness of the cracks' highlights. Default 1. Clamped to [0, 100]; NaN is refused with a
+   * warning.
    */
-  vtkSetClampMacro(CrackIntensity, double, 0.0, 100.0);
+  virtual void SetCrackIntensity(double intensity);
+  virtual double GetCrackIntensityMinValue() { return 0.0; }
+  virtual double GetCrackIntensityMaxValue() { return 100.0; }
   vtkGetMacro(CrackIntensity, double);
   ///@}
 
@@ -125,7 +145,8 @@ public:
 
   ///@{
   /**
-   * How cracks are kept inside the ice. Default DepthInterval.
+   * How cracks are kept inside the ice. Default DepthInterval. Geometry needs a closed surface:
+   * for an open one (a warning says so) the cracks are clipped to the depth interval.
    */
   vtkSetClampMacro(CrackClipping, int, DepthInterval, Geometry);
   vtkGetMacro(CrackClipping, int);
@@ -165,7 +186,9 @@ public:
   /**
    * How white and cloudy the air makes the ice: 0 sparse clear bubbles, 1 milky. Default 0.5.
    */
-  vtkSetClampMacro(Milkiness, double, 0.0, 1.0);
+  virtual void SetMilkiness(double milkiness);
+  virtual double GetMilkinessMinValue() { return 0.0; }
+  virtual double GetMilkinessMaxValue() { return 1.0; }
   vtkGetMacro(Milkiness, double);
   ///@}
 
@@ -176,9 +199,13 @@ public:
    * do not swim when the camera moves, and they drive reflection, refraction and Fresnel.
    * Defaults 0.08 and 0.15.
    */
-  vtkSetClampMacro(BumpStrength, double, 0.0, 10.0);
+  virtual void SetBumpStrength(double bumpStrength);
+  virtual double GetBumpStrengthMinValue() { return 0.0; }
+  virtual double GetBumpStrengthMaxValue() { return 10.0; }
   vtkGetMacro(BumpStrength, double);
-  vtkSetClampMacro(BumpScale, double, 1.0e-4, 100.0);
+  virtual void SetBumpScale(double bumpScale);
+  virtual double GetBumpScaleMinValue() { return 1.0e-4; }
+  virtual double GetBumpScaleMaxValue() { return 100.0; }
   vtkGetMacro(BumpScale, double);
   ///@}
 
@@ -208,7 +235,9 @@ public:
    * With Glistening: size of a crack cell in the input's units. Default 0.03; clamped to
    * [1e-6, 1e6].
    */
-  vtkSetClampMacro(GlisteningScale, double, 1.0e-6, 1.0e6);
+  virtual void SetGlisteningScale(double glisteningScale);
+  virtual double GetGlisteningScaleMinValue() { return 1.0e-6; }
+  virtual double GetGlisteningScaleMaxValue() { return 1.0e6; }
   vtkGetMacro(GlisteningScale, double);
   ///@}
 
@@ -216,7 +245,9 @@ public:
   /**
    * With Glistening: brightness of the glints. Default 1; clamped to [0, 100].
    */
-  vtkSetClampMacro(GlisteningIntensity, double, 0.0, 100.0);
+  virtual void SetGlisteningIntensity(double glisteningIntensity);
+  virtual double GetGlisteningIntensityMinValue() { return 0.0; }
+  virtual double GetGlisteningIntensityMaxValue() { return 100.0; }
   vtkGetMacro(GlisteningIntensity, double);
   ///@}
 
@@ -226,7 +257,9 @@ public:
    * behind the viewer), where the surface specular and the parallel crack layer are missing.
    * Default 2 (doubled, as in Liquidiced); 1 turns the intensification off. Clamped to [1, 10].
    */
-  vtkSetClampMacro(GlisteningAlignmentGain, double, 1.0, 10.0);
+  virtual void SetGlisteningAlignmentGain(double glisteningAlignmentGain);
+  virtual double GetGlisteningAlignmentGainMinValue() { return 1.0; }
+  virtual double GetGlisteningAlignmentGainMaxValue() { return 10.0; }
   vtkGetMacro(GlisteningAlignmentGain, double);
   ///@}
 
@@ -235,7 +268,9 @@ public:
    * With Glistening: 0 gives ice, 1 snow (white, diffuse), values between blend the two looks.
    * Default 0; clamped to [0, 1].
    */
-  vtkSetClampMacro(SnowAmount, double, 0.0, 1.0);
+  virtual void SetSnowAmount(double snowAmount);
+  virtual double GetSnowAmountMinValue() { return 0.0; }
+  virtual double GetSnowAmountMaxValue() { return 1.0; }
   vtkGetMacro(SnowAmount, double);
   ///@}
 
@@ -323,6 +358,13 @@ protected:
   // Which optional shader parts the next build includes (two-sided, depth debug view, glistening).
   int ShaderVariant() const;
 
+  // Looks at a new input: flat input (no volume, hence no inside) gets no cracks.
+  void InputPrepared() override;
+
+  // The crack clipping the input allows: Geometry needs a closed surface (the inside is found by
+  // ray casting); an open one is clipped to the depth interval instead, with one warning.
+  int UsableCrackClipping();
+
   // The cube map the ice samples: the prop's dynamic cube map, the renderer's environment texture
   // or the built-in sky. Binds it and returns it.
   vtkTextureObject* BindEnvironment(vtkRenderer* ren, vtkActor* act);
@@ -370,6 +412,11 @@ protected:
   vtkCracks* Cracks;
   class vtkAir;
   vtkAir* Air;
+
+  // What InputPrepared and UsableCrackClipping found about the current input.
+  bool InputFlat = false;
+  vtkIdType InputOpenEdges = -1; // counted when Geometry clipping first needs it
+  bool WarnedOpenInput = false;
 
 private:
   vtkIceMapper(const vtkIceMapper&) = delete;

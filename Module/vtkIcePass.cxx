@@ -12,27 +12,87 @@
 #include "vtkTranslucentPass.h"
 #include "vtkFrameBufferObjectBase.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkSequencePass.h"
 #include "vtkRenderer.h"
 
 #include <vector>
+
+namespace
+{
+// VTK 9.1's vtkOrderIndependentTranslucentPass creates its final blend (a vtkOpenGLQuadHelper
+// with a vertex array object) on first use and deletes it only in ReleaseGraphicsResources, not
+// in its destructor: a pass deleted without that call leaks the helper and its vertex array.
+// vtkIcePass owns one, and applications drop passes without releasing them (vtkRenderer::SetPass
+// does not release the old pass either), so the one vtkIcePass uses deletes it when it dies.
+class vtkIceOrderIndependentTranslucentPass : public vtkOrderIndependentTranslucentPass
+{
+public:
+  static vtkIceOrderIndependentTranslucentPass* New();
+  vtkTypeMacro(vtkIceOrderIndependentTranslucentPass, vtkOrderIndependentTranslucentPass);
+
+protected:
+  vtkIceOrderIndependentTranslucentPass() = default;
+  ~vtkIceOrderIndependentTranslucentPass() override
+  {
+    delete this->FinalBlend;
+    this->FinalBlend = nullptr;
+  }
+
+private:
+  vtkIceOrderIndependentTranslucentPass(const vtkIceOrderIndependentTranslucentPass&) = delete;
+  void operator=(const vtkIceOrderIndependentTranslucentPass&) = delete;
+};
+vtkStandardNewMacro(vtkIceOrderIndependentTranslucentPass);
+}
 
 vtkStandardNewMacro(vtkIcePass);
 vtkCxxSetObjectMacro(vtkIcePass, DelegatePass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkIcePass, CubeMapPass, vtkIceCubeMapPass);
 
+// The step of the default delegate that draws the ice's air and cracks right after the opaque
+// geometry, so translucent geometry in front of the ice is composited over them.
+class vtkIceOverlayStep : public vtkRenderPass
+{
+public:
+  static vtkIceOverlayStep* New();
+  vtkTypeMacro(vtkIceOverlayStep, vtkRenderPass);
+  void Render(const vtkRenderState* s) override
+  {
+    this->NumberOfRenderedProps = 0;
+    if (this->Owner && this->IceState)
+    {
+      this->Owner->RenderOverlays(s, this->IceState);
+    }
+  }
+  vtkIcePass* Owner = nullptr;               // not counted: the owner holds this step
+  const vtkRenderState* IceState = nullptr;  // the ice props, while the frame renders
+};
+vtkStandardNewMacro(vtkIceOverlayStep);
+
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
 {
-  this->DefaultDelegate = vtkRenderStepsPass::New();
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
+  this->DefaultDelegate = steps;
   this->SetDelegatePass(this->DefaultDelegate);
+  this->OverlayStep = vtkIceOverlayStep::New();
+  this->OverlayStep->Owner = this;
+  vtkNew<vtkSequencePass> opaqueThenOverlays;
+  vtkNew<vtkRenderPassCollection> opaqueSteps;
+  opaqueSteps->AddItem(steps->GetOpaquePass());
+  opaqueSteps->AddItem(this->OverlayStep);
+  opaqueThenOverlays->SetPasses(opaqueSteps);
+  steps->SetOpaquePass(opaqueThenOverlays);
 
   vtkNew<vtkTranslucentPass> translucent;
-  vtkOrderIndependentTranslucentPass* oit = vtkOrderIndependentTranslucentPass::New();
+  vtkOrderIndependentTranslucentPass* oit = vtkIceOrderIndependentTranslucentPass::New();
   oit->SetTranslucentPass(translucent);
   this->OrderIndependentTranslucency = oit;
   vtkDualDepthPeelingPass* peeling = vtkDualDepthPeelingPass::New();
@@ -65,6 +125,7 @@ vtkIcePass::~vtkIcePass()
   this->SetDelegatePass(nullptr);
   this->SetCubeMapPass(nullptr);
   this->DefaultDelegate->Delete();
+  this->OverlayStep->Delete();
   this->OrderIndependentTranslucency->Delete();
   this->DepthPeeling->Delete();
   this->BackfaceNormalPass->Delete();
@@ -118,13 +179,21 @@ void vtkIcePass::Render(const vtkRenderState* s)
     }
   }
 
+  // The default delegate draws air and cracks after the opaque geometry; another delegate gets
+  // them over its finished frame.
+  const bool overlaysInDelegate = this->DelegatePass == this->DefaultDelegate;
+  this->OverlayStep->IceState = runIcePasses && overlaysInDelegate ? &iceState : nullptr;
   this->ConfigureDefaultDelegate(s->GetRenderer());
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->OverlayStep->IceState = nullptr;
 
   if (runIcePasses)
   {
-    this->RenderCracks(s, &iceState);
+    if (!overlaysInDelegate)
+    {
+      this->RenderOverlays(s, &iceState);
+    }
     for (vtkIceMapper* mapper : iceMappers)
     {
       mapper->SetBackfaceNormalTexture(nullptr);
@@ -138,7 +207,7 @@ void vtkIcePass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkIcePass::RenderCracks(const vtkRenderState* s, const vtkRenderState* iceState)
+void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState)
 {
   vtkRenderer* renderer = s->GetRenderer();
   vtkOpenGLState* state =

@@ -16,8 +16,9 @@
  *    is used (static environment),
  * 2. depth interval (vtkIceDepthIntervalPass: front and back depth of the ice, for the cracks),
  * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
- * After the delegate it draws the ice mappers' air planes (blended back to front) and cracks
- * (highlights added) over the scene, clipped to the ice: one draw each per ice prop however many
+ * Right after the opaque geometry (before translucent geometry, when the delegate is the default
+ * one; after the delegate otherwise) it draws the ice mappers' air planes (blended back to front)
+ * and cracks (highlights added), clipped to the ice: one draw each per ice prop however many
  * planes and cracks it has.
  *
  * @sa vtkIceMapper vtkIceBackfaceNormalPass
@@ -31,6 +32,7 @@
 class vtkIceBackfaceNormalPass;
 class vtkIceCubeMapPass;
 class vtkIceDepthIntervalPass;
+class vtkIceOverlayStep;
 
 class RENDERINGICE_EXPORT vtkIcePass : public vtkRenderPass
 {
@@ -70,6 +72,12 @@ public:
    */
   vtkGetMacro(NumberOfIceProps, int);
 
+  /**
+   * Draws the ice props of `iceState` (their air, then their cracks) over what `s` rendered so
+   * far. Called by the pass itself after the opaque geometry.
+   */
+  void RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState);
+
 protected:
   vtkIcePass();
   ~vtkIcePass() override;
@@ -77,8 +85,7 @@ protected:
   // Matches the default delegate's translucent pass to the renderer's depth-peeling setting.
   void ConfigureDefaultDelegate(vtkRenderer* renderer);
 
-  // Draws the ice props' air and cracks over the rendered scene.
-  void RenderCracks(const vtkRenderState* s, const vtkRenderState* iceState);
+  vtkIceOverlayStep* OverlayStep = nullptr;
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkRenderPass* DefaultDelegate = nullptr;

@@ -99,6 +99,7 @@ bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
   iceNormals->SetName(IceNormalArray);
   this->PreparedInput->GetPointData()->AddArray(iceNormals);
   this->PreparedValid = true;
+  this->InputPrepared();
   return true;
 }
 

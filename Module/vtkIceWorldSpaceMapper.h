@@ -75,6 +75,10 @@ protected:
   // Checks the input and builds the polydata actually drawn (input plus ice normals).
   bool PrepareInput(vtkPolyData* input);
 
+  // Called once for each new input that passed the checks, with PreparedInput built: subclasses
+  // look at what they need (and warn) here.
+  virtual void InputPrepared() {}
+
   vtkSmartPointer<vtkPolyData> PreparedInput;
   vtkMTimeType PreparedInputTime = 0;
   vtkPolyData* PreparedSource = nullptr;

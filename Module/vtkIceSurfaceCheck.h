@@ -1,0 +1,27 @@
+// Private to the module: properties of an ice mapper's input that decide what the ice can do
+// with it (vtkIceMapper warns about them once per input).
+#ifndef vtkIceSurfaceCheck_h
+#define vtkIceSurfaceCheck_h
+
+#include "vtkType.h"
+
+class vtkPoints;
+class vtkPolyData;
+
+namespace vtkIceSurfaceCheck
+{
+// The spread of the points across their flattest direction (the principal axis of least
+// variance), `thickness`, and along their longest one, `size`. A flat input (all points in one
+// plane, in any orientation) has a thickness of 0 up to rounding.
+void Extents(vtkPoints* points, double& thickness, double& size);
+
+// Whether Extents says the points have no volume: thickness at most 1e-5 of the size.
+bool IsFlat(double thickness, double size);
+
+// The number of edges of the surface's polygons and strips that only one polygon uses, once
+// coincident points are merged (within 1e-6 of the bounding box's diagonal, so that seams with
+// duplicated points count as joined): 0 for a closed surface.
+vtkIdType CountOpenEdges(vtkPolyData* surface);
+}
+
+#endif
