@@ -2,6 +2,7 @@
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
+#   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
 # run again through EGL with no DISPLAY at all (Documentation/headless.md).
@@ -34,6 +35,10 @@ case "$command" in
     build
     "$build_dir/bin/ice-render" "$@"
     ;;
+  bench)
+    build
+    "$build_dir/bin/ice-bench" "$@"
+    ;;
   test)
     build
     status=0
@@ -44,7 +49,8 @@ case "$command" in
     exit "$status"
     ;;
   *)
-    echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" >&2
+    echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
+      "| ./ice.sh bench [ice-bench options]" >&2
     exit 2
     ;;
 esac

@@ -160,8 +160,6 @@ vtkSmartPointer<vtkPolyData> Normalize(vtkPolyData* model)
 }
 }
 
-namespace
-{
 void AddLandscape(vtkRenderer* renderer, double groundHeight)
 {
   // Checkered snow and grass, half a unit per square, mip-mapped for the distance.
@@ -259,7 +257,6 @@ void AddLandscape(vtkRenderer* renderer, double groundHeight)
   fill->SetLightTypeToHeadlight();
   fill->SetIntensity(0.35);
   renderer->AddLight(fill);
-}
 }
 
 vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& error)
