@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -523,6 +524,14 @@ IceBench::Statistics Summarize(std::vector<double> times)
   return s;
 }
 
+// CPU time of the whole process (the main thread and llvmpipe's threads) in milliseconds.
+double ProcessCpuMilliseconds()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
 struct Schedule
 {
   int WarmUp = 3;   // untimed frames per configuration before the first round
@@ -569,9 +578,11 @@ void MeasureGroup(
         scenes[i].CubeMapPass ? scenes[i].CubeMapPass->GetNumberOfFaceRenders() : 0;
       for (int f = 0; f < schedule.PerRound; ++f)
       {
+        const double cpuStart = ProcessCpuMilliseconds();
         const auto start = std::chrono::steady_clock::now();
         frame(i);
         const auto end = std::chrono::steady_clock::now();
+        g.Configurations[i].CpuTimes.push_back(ProcessCpuMilliseconds() - cpuStart);
         g.Configurations[i].Times.push_back(
           std::chrono::duration<double, std::milli>(end - start).count());
       }
@@ -585,13 +596,16 @@ void MeasureGroup(
   {
     Configuration& c = g.Configurations[i];
     c.Stats = Summarize(c.Times);
+    c.CpuMedian = Summarize(c.CpuTimes).Median;
     c.CubeFacesPerFrame =
       c.Times.empty() ? 0.0 : static_cast<double>(faces[i]) / static_cast<double>(c.Times.size());
   }
   const double baseline = g.Configurations[0].Stats.Median;
+  const double cpuBaseline = g.Configurations[0].CpuMedian;
   for (Configuration& c : g.Configurations)
   {
     c.Ratio = baseline > 0.0 ? c.Stats.Median / baseline : 0.0;
+    c.CpuRatio = cpuBaseline > 0.0 ? c.CpuMedian / cpuBaseline : 0.0;
   }
   activate(n); // none
 }
@@ -746,14 +760,16 @@ void PrintGroup(std::ostream& out, const Group& g)
       << CoverageText(g) << " of " << Width << "x" << Height << "\n";
   out << "   " << std::left << std::setw(42) << "configuration" << std::right << std::setw(10)
       << "median ms" << std::setw(18) << "IQR ms" << std::setw(9) << "fps" << std::setw(8)
-      << "ratio"
+      << "ratio" << std::setw(10) << "CPU ms" << std::setw(10) << "CPU ratio"
       << "\n";
   for (const Configuration& c : g.Configurations)
   {
     out << "   " << std::left << std::setw(42) << c.Label << std::right << std::setw(10)
         << Fixed(c.Stats.Median, 2) << std::setw(18)
         << (Fixed(c.Stats.P25, 2) + " - " + Fixed(c.Stats.P75, 2)) << std::setw(9)
-        << Fixed(1000.0 / c.Stats.Median, 1) << std::setw(8) << Fixed(c.Ratio, 2) << "\n";
+        << Fixed(1000.0 / c.Stats.Median, 1) << std::setw(8) << Fixed(c.Ratio, 2)
+        << std::setw(10) << Fixed(c.CpuMedian, 1) << std::setw(10) << Fixed(c.CpuRatio, 2)
+        << "\n";
   }
 }
 
@@ -788,7 +804,8 @@ bool WriteCsv(const std::string& path, const std::vector<Group>& groups, const M
   std::ofstream out(path);
   out << "group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,"
          "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
-         "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cube_faces_per_frame,"
+         "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
+         "cube_faces_per_frame,"
          "renderer\n";
   const char* modes[3] = { "every-frame", "on-change", "manual" };
   for (const Group& g : groups)
@@ -806,7 +823,8 @@ bool WriteCsv(const std::string& path, const std::vector<Group>& groups, const M
           << "," << Fixed(c.Stats.P75, 3) << "," << Fixed(c.Stats.Min, 3) << ","
           << Fixed(c.Stats.Max, 3) << "," << Fixed(c.Stats.Mean, 3) << ","
           << Fixed(1000.0 / c.Stats.Median, 2) << "," << Fixed(g.Configurations[0].Stats.Median, 3)
-          << "," << Fixed(c.Ratio, 4) << "," << Fixed(c.CubeFacesPerFrame, 3) << ",\""
+          << "," << Fixed(c.Ratio, 4) << "," << Fixed(c.CpuMedian, 3) << ","
+          << Fixed(c.CpuRatio, 4) << "," << Fixed(c.CubeFacesPerFrame, 3) << ",\""
           << machine.Renderer << "\"\n";
     }
   }
@@ -834,14 +852,16 @@ bool WriteMarkdown(const std::string& path, const std::vector<Group>& groups,
   {
     out << "\n**" << g.Title << "** (" << g.Triangles << " triangles, object covers "
         << CoverageText(g) << " of the window)\n\n";
-    out << "| configuration | median ms | IQR ms | min - max ms | fps | ratio |\n";
-    out << "|---|---:|---:|---:|---:|---:|\n";
+    out << "| configuration | median ms | IQR ms | min - max ms | fps | ratio | CPU ms | CPU ratio "
+           "|\n";
+    out << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const Configuration& c : g.Configurations)
     {
       out << "| " << c.Label << " | " << Fixed(c.Stats.Median, 2) << " | " << Fixed(c.Stats.P25, 2)
           << " - " << Fixed(c.Stats.P75, 2) << " | " << Fixed(c.Stats.Min, 2) << " - "
           << Fixed(c.Stats.Max, 2) << " | " << Fixed(1000.0 / c.Stats.Median, 1) << " | "
-          << Fixed(c.Ratio, 2) << " |\n";
+          << Fixed(c.Ratio, 2) << " | " << Fixed(c.CpuMedian, 1) << " | " << Fixed(c.CpuRatio, 2)
+          << " |\n";
     }
   }
   return out.good();

@@ -40,9 +40,12 @@ struct Configuration
   bool Moving = false; // a ball circles the ice, moved before every frame
 
   // Results.
-  std::vector<double> Times; // milliseconds per timed frame
+  std::vector<double> Times;    // wall-clock milliseconds per timed frame
+  std::vector<double> CpuTimes; // CPU milliseconds of the process (all threads) per timed frame
   Statistics Stats;
+  double CpuMedian = 0.0;
   double Ratio = 0.0;             // median / the group's plain VTK median
+  double CpuRatio = 0.0;          // the same for CPU time: less sensitive to other load
   double CubeFacesPerFrame = 0.0; // measured over the timed frames
 };
 

@@ -24,7 +24,8 @@ import csv, math, sys
 
 expected = ("group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,"
             "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
-            "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cube_faces_per_frame,"
+            "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
+            "cube_faces_per_frame,"
             "renderer").split(",")
 problems = []
 with open("bench.csv", newline="") as f:
@@ -53,6 +54,7 @@ for r in data:
     try:
         t = {k: float(r[k]) for k in ("median_ms", "p25_ms", "p75_ms", "min_ms", "max_ms",
                                        "mean_ms", "fps", "baseline_median_ms", "ratio",
+                                       "cpu_median_ms", "cpu_ratio",
                                        "coverage", "cube_faces_per_frame")}
         frames, triangles = int(r["frames"]), int(r["triangles"])
         cracks, air = int(r["cracks"]), int(r["air_planes"])
@@ -67,6 +69,8 @@ for r in data:
         problems.append("%s: mean outside min..max" % where)
     if abs(t["ratio"] - t["median_ms"] / t["baseline_median_ms"]) > 1e-3 * t["ratio"] + 1e-4:
         problems.append("%s: ratio is not median / baseline" % where)
+    if t["cpu_median_ms"] <= 0 or t["cpu_ratio"] <= 0:
+        problems.append("%s: no CPU time" % where)
     if abs(t["fps"] - 1000.0 / t["median_ms"]) > 0.01 + 1e-3 * t["fps"]:
         problems.append("%s: fps is not 1000 / median" % where)
     if frames != 4:
