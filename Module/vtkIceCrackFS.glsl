@@ -15,16 +15,30 @@ float iceHash(vec3 p)
   return fract((p.x + p.y) * p.z);
 }
 
-float iceValueNoise(vec3 x)
+// Value noise: the eight hashed lattice values around x blended with smoothstep weights.
+// Returns the gradient of that field, exactly (the derivative of the blend): one set of eight
+// hashes per fragment instead of six noise evaluations for central differences.
+vec3 iceValueNoiseGradient(vec3 x)
 {
   vec3 i = floor(x);
   vec3 f = fract(x);
-  f = f * f * (3.0 - 2.0 * f);
-  float a = mix(iceHash(i), iceHash(i + vec3(1, 0, 0)), f.x);
-  float b = mix(iceHash(i + vec3(0, 1, 0)), iceHash(i + vec3(1, 1, 0)), f.x);
-  float c = mix(iceHash(i + vec3(0, 0, 1)), iceHash(i + vec3(1, 0, 1)), f.x);
-  float d = mix(iceHash(i + vec3(0, 1, 1)), iceHash(i + vec3(1, 1, 1)), f.x);
-  return mix(mix(a, b, f.y), mix(c, d, f.y), f.z);
+  vec3 u = f * f * (3.0 - 2.0 * f);
+  vec3 du = 6.0 * f * (1.0 - f);
+  float k000 = iceHash(i);
+  float k100 = iceHash(i + vec3(1, 0, 0));
+  float k010 = iceHash(i + vec3(0, 1, 0));
+  float k110 = iceHash(i + vec3(1, 1, 0));
+  float k001 = iceHash(i + vec3(0, 0, 1));
+  float k101 = iceHash(i + vec3(1, 0, 1));
+  float k011 = iceHash(i + vec3(0, 1, 1));
+  float k111 = iceHash(i + vec3(1, 1, 1));
+  float bxy = k000 - k100 - k010 + k110;
+  float bxz = k000 - k100 - k001 + k101;
+  float byz = k000 - k010 - k001 + k011;
+  float bxyz = -k000 + k100 + k010 - k110 + k001 - k101 - k011 + k111;
+  return du * vec3(k100 - k000 + bxy * u.y + bxz * u.z + bxyz * u.y * u.z,
+                   k010 - k000 + bxy * u.x + byz * u.z + bxyz * u.x * u.z,
+                   k001 - k000 + bxz * u.x + byz * u.y + bxyz * u.x * u.y);
 }
 
 // Window depth of a view depth for the current camera.
@@ -34,24 +48,23 @@ float iceWindowDepth(float viewDepth)
                                         : (iceDepthToWindow.y - iceDepthToWindow.x * viewDepth) / viewDepth;
   return 0.5 * ndc + 0.5;
 }
+//ICE::Interval
+  // The ice's depth interval here; outside it nothing is drawn, so leave before the bump mapping.
+  vec2 iceInterval = texelFetch(iceDepthInterval, iceScreenTexel(), 0).rg;
+  if (iceCrackClip == 1 && (iceViewDepth() < iceInterval.x || iceViewDepth() > iceInterval.y))
+  {
+    discard;
+  }
 //ICE::Normal
   {
     // Bump mapping: tilt the normal by the gradient of a noise field fixed to the crack.
-    vec3 p = iceCrackMC * iceBumpFrequency;
-    const float h = 0.05;
-    vec3 gradient = vec3(
-      iceValueNoise(p + vec3(h, 0, 0)) - iceValueNoise(p - vec3(h, 0, 0)),
-      iceValueNoise(p + vec3(0, h, 0)) - iceValueNoise(p - vec3(0, h, 0)),
-      iceValueNoise(p + vec3(0, 0, h)) - iceValueNoise(p - vec3(0, 0, h))) / (2.0 * h);
-    vec3 gradientVC = normalMatrix * gradient;
+    vec3 gradientVC = normalMatrix * iceValueNoiseGradient(iceCrackMC * iceBumpFrequency);
     gradientVC -= dot(gradientVC, normalVCVSOutput) * normalVCVSOutput;
     normalVCVSOutput = normalize(normalVCVSOutput - iceBumpStrength * gradientVC);
   }
 //ICE::Impl
   {
-    vec2 interval = texelFetch(iceDepthInterval, iceScreenTexel(), 0).rg;
-    float depth = iceViewDepth();
-    if (iceCrackClip == 1 && (depth < interval.x || depth > interval.y)) { discard; }
+    vec2 interval = iceInterval;
     // Only the specular highlight shows; where there is none the crack adds nothing.
     gl_FragData[0] = iceCrackDebug == 1 ? vec4(1.0, 0.0, 0.0, 1.0)
                                         : vec4(iceCrackIntensity * gl_FragData[0].rgb, 1.0);
