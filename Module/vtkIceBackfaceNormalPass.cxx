@@ -2,6 +2,7 @@
 
 #include "vtkIceBackfaceNormalFS.h"
 #include "vtkIceMapper.h"
+#include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
 
 #include "vtkActor.h"
@@ -20,6 +21,19 @@
 
 vtkStandardNewMacro(vtkIceBackfaceNormalPass);
 
+class vtkIceBackfaceNormalPass::vtkInternals
+{
+public:
+  vtkIceScreenRegion::Tracker Normals; // what of NormalTexture may not hold the clear value
+  vtkOpenGLState* State = nullptr;     // while Render runs
+};
+
+//------------------------------------------------------------------------------
+vtkIceBackfaceNormalPass::vtkIceBackfaceNormalPass()
+  : Internals(new vtkInternals)
+{
+}
+
 //------------------------------------------------------------------------------
 vtkIceBackfaceNormalPass::~vtkIceBackfaceNormalPass() = default;
 
@@ -33,6 +47,12 @@ vtkTextureObject* vtkIceBackfaceNormalPass::GetNormalTexture()
 void vtkIceBackfaceNormalPass::AllocateResources(
   vtkOpenGLRenderWindow* window, int width, int height)
 {
+  if (!this->NormalTexture || this->NormalTexture->GetWidth() != static_cast<unsigned int>(width) ||
+    this->NormalTexture->GetHeight() != static_cast<unsigned int>(height))
+  {
+    // New or resized: the whole texture is cleared once.
+    this->Internals->Normals.Reset();
+  }
   if (!this->NormalTexture)
   {
     this->NormalTexture = vtkSmartPointer<vtkTextureObject>::New();
@@ -78,6 +98,12 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
   this->AllocateResources(window, width, height);
 
+  // Clear only where the ice can be now or was in the frame before; nothing is drawn elsewhere.
+  int covered[4];
+  vtkIceScreenRegion::Covered(s, width, height, covered);
+  int normalsToClear[4];
+  this->Internals->Normals.ToClear(covered, width, height, normalsToClear);
+
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglScissor scissorSaver(state);
   vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
@@ -97,7 +123,24 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  {
+    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    state->vtkglScissor(normalsToClear[0], normalsToClear[1], normalsToClear[2] - normalsToClear[0],
+      normalsToClear[3] - normalsToClear[1]);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    // The depth buffer serves this pass only: its covered part is enough.
+    state->vtkglScissor(covered[0], covered[1], covered[2] - covered[0], covered[3] - covered[1]);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  }
+  state->vtkglScissor(0, 0, width, height);
+
+  // SetShaderParameters culls the front faces of the ice; the actors' own culling comes back
+  // with the next vtkProperty::Render, and the saved state when the pass ends.
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  int cullMode = GL_BACK;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
+  this->Internals->State = state;
 
   this->PreRender(s);
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -114,6 +157,8 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
     }
   }
   this->PostRender(s);
+  this->Internals->State = nullptr;
+  state->vtkglCullFace(static_cast<unsigned int>(cullMode));
 
   this->FrameBuffer->RemoveColorAttachments(1);
   this->FrameBuffer->RemoveDepthAttachment();
@@ -129,6 +174,21 @@ bool vtkIceBackfaceNormalPass::PostReplaceShaderValues(std::string&, std::string
     vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Impl"));
   vtkShaderProgram::Substitute(fragmentShader, "//ICEHOOK::CrackOutput",
     vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Crack"));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceBackfaceNormalPass::SetShaderParameters(
+  vtkShaderProgram*, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  // Called for each draw after the actor's property has set its culling: the ice surface draws
+  // only its back faces (the shader still discards front faces, now none reach it). Cracks
+  // drawn into this pass are left alone (vtkIceMapper::RenderCracks draws them unculled).
+  if (this->Internals->State && vtkIceMapper::SafeDownCast(mapper))
+  {
+    this->Internals->State->vtkglCullFace(GL_FRONT);
+    this->Internals->State->vtkglEnable(GL_CULL_FACE);
+  }
   return true;
 }
 

@@ -7,6 +7,9 @@
  * ice props) with front faces culled and writes their world-space normals, normalised per
  * fragment, into an RGBA32F texture the size of the viewport. Alpha is 1 where ice was drawn and
  * 0 elsewhere. The texture follows the viewport's size and is freed by ReleaseGraphicsResources.
+ * Each frame only the part of the texture the ice can cover (its projected bounding box, and
+ * where it was the frame before) is cleared and drawn, and the front faces are culled by OpenGL,
+ * not discarded in the shader: the cost follows the ice's size on the screen.
  * Cracks of ice mappers with CracksPerturbRefraction on are drawn into it too, where they lie in
  * front of the back face.
  */
@@ -17,8 +20,11 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkSmartPointer.h" // for members
 
+#include <memory> // for members
+
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkTextureObject;
 
 class RENDERINGICE_EXPORT vtkIceBackfaceNormalPass : public vtkOpenGLRenderPass
@@ -42,9 +48,11 @@ public:
 
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
 
 protected:
-  vtkIceBackfaceNormalPass() = default;
+  vtkIceBackfaceNormalPass();
   ~vtkIceBackfaceNormalPass() override;
 
   void AllocateResources(vtkOpenGLRenderWindow* window, int width, int height);
@@ -52,6 +60,9 @@ protected:
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
   vtkSmartPointer<vtkTextureObject> NormalTexture;
   vtkSmartPointer<vtkTextureObject> DepthTexture;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 
 private:
   vtkIceBackfaceNormalPass(const vtkIceBackfaceNormalPass&) = delete;

@@ -1,6 +1,8 @@
 #include "vtkIceDepthIntervalPass.h"
 
 #include "vtkIceDepthIntervalFS.h"
+#include "vtkIceMapper.h"
+#include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
 
 #include "vtkCamera.h"
@@ -50,8 +52,18 @@ bool FitDepthRange(const vtkRenderState* s, const double eye[3], const double di
 }
 }
 
+class vtkIceDepthIntervalPass::vtkInternals
+{
+public:
+  vtkIceScreenRegion::Tracker Interval; // what of DepthTexture may not hold the empty interval
+  vtkOpenGLState* State = nullptr;      // while Render runs
+};
+
 //------------------------------------------------------------------------------
-vtkIceDepthIntervalPass::vtkIceDepthIntervalPass() = default;
+vtkIceDepthIntervalPass::vtkIceDepthIntervalPass()
+  : Internals(new vtkInternals)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkIceDepthIntervalPass::~vtkIceDepthIntervalPass() = default;
@@ -66,6 +78,12 @@ vtkTextureObject* vtkIceDepthIntervalPass::GetDepthTexture()
 void vtkIceDepthIntervalPass::AllocateResources(
   vtkOpenGLRenderWindow* window, int width, int height)
 {
+  if (!this->DepthTexture || this->DepthTexture->GetWidth() != static_cast<unsigned int>(width) ||
+    this->DepthTexture->GetHeight() != static_cast<unsigned int>(height))
+  {
+    // New or resized: the whole texture is cleared once.
+    this->Internals->Interval.Reset();
+  }
   if (!this->DepthTexture)
   {
     this->DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
@@ -111,6 +129,13 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
   this->AllocateResources(window, width, height);
 
+  // Clear only where the ice can be now or was in the frame before; nothing is drawn elsewhere,
+  // so the rest of the texture keeps the empty interval the cracks find outside the ice.
+  int covered[4];
+  vtkIceScreenRegion::Covered(s, width, height, covered);
+  int intervalToClear[4];
+  this->Internals->Interval.ToClear(covered, width, height, intervalToClear);
+
   // Near and far planes on the props' bounding box: the depth test in this pass gets all the
   // depth buffer's precision. The texture stores linear view depth, independent of them.
   double clipping[2];
@@ -143,7 +168,20 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   // Empty interval where there is no ice: front beyond back.
   state->vtkglClearColor(FLT_MAX, -FLT_MAX, 0.0, 0.0);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(intervalToClear[0], intervalToClear[1],
+    intervalToClear[2] - intervalToClear[0], intervalToClear[3] - intervalToClear[1]);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  // The depth buffer serves this pass only: its covered part is enough, and drawing stays there.
+  state->vtkglScissor(covered[0], covered[1], covered[2] - covered[0], covered[3] - covered[1]);
+
+  // SetShaderParameters culls the faces a stage does not want; the actors' own culling comes
+  // back with the next vtkProperty::Render, and the saved state when the pass ends.
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  int cullMode = GL_BACK;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
+  this->Internals->State = state;
 
   this->PreRender(s);
   // Stage 0: nearest front face into R. Stage 1: farthest back face into G.
@@ -162,6 +200,8 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   }
   this->Stage = 0;
   this->PostRender(s);
+  this->Internals->State = nullptr;
+  state->vtkglCullFace(static_cast<unsigned int>(cullMode));
   state->vtkglClearDepth(1.0);
 
   this->FrameBuffer->RemoveColorAttachments(1);
@@ -184,8 +224,15 @@ bool vtkIceDepthIntervalPass::PostReplaceShaderValues(std::string&, std::string&
 
 //------------------------------------------------------------------------------
 bool vtkIceDepthIntervalPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
+  // Called for each draw after the actor's property has set its culling: stage 0 wants the
+  // front faces, stage 1 the back faces (the shader still discards the others; none reach it).
+  if (this->Internals->State && vtkIceMapper::SafeDownCast(mapper))
+  {
+    this->Internals->State->vtkglCullFace(this->Stage == 0 ? GL_BACK : GL_FRONT);
+    this->Internals->State->vtkglEnable(GL_CULL_FACE);
+  }
   if (program->IsUniformUsed("iceDepthStage"))
   {
     program->SetUniformi("iceDepthStage", this->Stage);

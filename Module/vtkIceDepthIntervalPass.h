@@ -8,7 +8,10 @@
  * an RG32F texture at viewport size: the nearest front-face view depth into R, the farthest
  * back-face view depth into G (view depth: distance in front of the camera along the view
  * direction). Where there is no ice, R > G. While it renders, the camera's near and far planes
- * are fitted to the props' bounding box, as the paper does for depth precision.
+ * are fitted to the props' bounding box, as the paper does for depth precision. Each frame only
+ * the part of the texture the ice can cover (its projected bounding box, and where it was the
+ * frame before) is cleared and drawn, and each stage culls the faces it does not want in OpenGL
+ * rather than discarding them in the shader.
  */
 #ifndef vtkIceDepthIntervalPass_h
 #define vtkIceDepthIntervalPass_h
@@ -16,6 +19,8 @@
 #include "RenderingIceModule.h" // for export macro
 #include "vtkOpenGLRenderPass.h"
 #include "vtkSmartPointer.h" // for members
+
+#include <memory> // for members
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -64,6 +69,9 @@ protected:
   double DepthRange[2] = { 0.0, 1.0 };
   int Stage = 0;
   vtkIdType NumberOfGeometryPasses = 0;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 
 private:
   vtkIceDepthIntervalPass(const vtkIceDepthIntervalPass&) = delete;

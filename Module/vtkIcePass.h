@@ -15,6 +15,7 @@
  *    the scene around it (dynamic environment); without one, the renderer's environment texture
  *    is used (static environment),
  * 2. depth interval (vtkIceDepthIntervalPass: front and back depth of the ice, for the cracks),
+ *    only when an ice mapper has cracks or a debug view,
  * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
  * After the delegate it draws the ice mappers' cracks over the scene, clipped to the ice: one
  * draw per ice prop however many cracks it has.
