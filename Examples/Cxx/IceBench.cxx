@@ -57,7 +57,8 @@ const char* const Usage =
   "Times ice against plain VTK (same scene, a vtkPolyDataMapper with Phong shading) at\n"
   "1024x768, offscreen, glFinish after every frame, and prints a table of medians and ratios.\n"
   "  --quick     a few configurations and frames (under a minute)\n"
-  "  --frames N  timed frames per configuration (default 30, quick 4), after warm-up\n"
+  "  --frames N  timed frames per configuration (default 30, quick 4), after warm-up; in a\n"
+  "              full run configurations slower than 200 ms a frame get fewer (at least 6)\n"
   "  --csv       the results as CSV (default ice-bench.csv; '' for none)\n"
   "  --plot      a PNG of ratios and scaling curves (default none)\n"
   "  --markdown  the tables and the machine as Markdown (default none)\n"
@@ -537,6 +538,11 @@ struct Schedule
   int WarmUp = 3;   // untimed frames per configuration before the first round
   int Rounds = 6;   // every configuration of a group takes its turn once per round
   int PerRound = 5; // timed frames per turn, after one untimed frame
+  // When positive, a turn of a slow configuration takes about this many milliseconds: fewer
+  // timed frames (at least one per round), no untimed frame after the switch for frames over
+  // SlowFrame ms, and two warm-up frames. Keeps the full run within minutes.
+  double TurnBudget = 0.0;
+  double SlowFrame = 100.0;
 };
 
 void MeasureGroup(
@@ -554,17 +560,34 @@ void MeasureGroup(
     {
       MoveBall(scenes[i].Ball);
     }
+    const auto start = std::chrono::steady_clock::now();
     window->Render();
     glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
   };
+  // The last warm-up frame of each configuration estimates its frame time.
+  std::vector<double> estimate(n, 0.0);
   for (size_t i = 0; i < n; ++i)
   {
     activate(i);
     for (int f = 0; f < schedule.WarmUp; ++f)
     {
-      frame(i);
+      estimate[i] = frame(i);
+      if (f >= 1 && schedule.TurnBudget > 0.0 && estimate[i] > schedule.SlowFrame)
+      {
+        break;
+      }
     }
   }
+  auto framesPerTurn = [&](size_t i) {
+    if (schedule.TurnBudget <= 0.0 || estimate[i] <= 0.0)
+    {
+      return schedule.PerRound;
+    }
+    const int fit = static_cast<int>(schedule.TurnBudget / estimate[i]);
+    return std::max(1, std::min(schedule.PerRound, fit));
+  };
   std::vector<long long> faces(n, 0);
   for (int round = 0; round < schedule.Rounds; ++round)
   {
@@ -573,10 +596,14 @@ void MeasureGroup(
       // A different configuration starts each round.
       const size_t i = (k + static_cast<size_t>(round)) % n;
       activate(i);
-      frame(i); // settles the switch between renderers
+      if (schedule.TurnBudget <= 0.0 || estimate[i] <= schedule.SlowFrame)
+      {
+        frame(i); // settles the switch between renderers
+      }
       const long long facesBefore =
         scenes[i].CubeMapPass ? scenes[i].CubeMapPass->GetNumberOfFaceRenders() : 0;
-      for (int f = 0; f < schedule.PerRound; ++f)
+      const int frames = framesPerTurn(i);
+      for (int f = 0; f < frames; ++f)
       {
         const double cpuStart = ProcessCpuMilliseconds();
         const auto start = std::chrono::steady_clock::now();
@@ -841,7 +868,8 @@ bool WriteMarkdown(const std::string& path, const std::vector<Group>& groups,
   out << "| back end | " << machine.Backend << " |\n";
   out << "| VTK | " << machine.VTK << " |\n";
   out << "| frames | " << Width << "x" << Height << " offscreen, " << frames
-      << " timed frames per configuration, glFinish after each |\n\n";
+      << " timed frames per configuration (fewer for frames over 200 ms: see the CSV), glFinish "
+         "after each |\n\n";
   out << "| target | limit | measured | |\n|---|---|---|---|\n";
   for (const IceBench::Target& t : targets)
   {
@@ -890,6 +918,10 @@ int main(int argc, char* argv[])
     schedule.WarmUp = 2;
     schedule.Rounds = 2;
     schedule.PerRound = 2;
+  }
+  else
+  {
+    schedule.TurnBudget = 1000.0;
   }
   if (options.Frames > 0)
   {
@@ -978,7 +1010,9 @@ int main(int argc, char* argv[])
                 << machine.Threads << " threads), " << machine.Backend << "\n"
                 << "ice-bench: " << Width << "x" << Height << ", " << frames
                 << " timed frames per configuration (" << schedule.Rounds << " rounds of "
-                << schedule.PerRound << "), multisamples " << window->GetMultiSamples() << "\n";
+                << schedule.PerRound
+                << (schedule.TurnBudget > 0.0 ? "; fewer for frames over 200 ms" : "")
+                << "), multisamples " << window->GetMultiSamples() << "\n";
     }
 
     std::vector<Scene> scenes;
