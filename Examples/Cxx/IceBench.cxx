@@ -648,6 +648,7 @@ struct Machine
   unsigned int Threads = 0;
   std::string Backend;
   std::string VTK;
+  int MultiSamples = 0;
 };
 
 std::string CpuModel()
@@ -778,7 +779,7 @@ std::string TargetVerdict(const IceBench::Target& t)
   }
   const double over =
     t.IsIncrease ? 100.0 * (t.Value - t.Bound) : 100.0 * (t.Value / t.Bound - 1.0);
-  return "missed by " + Fixed(over, 0) + (t.IsIncrease ? " points" : " %");
+  return "missed by " + Fixed(over, over < 10.0 ? 1 : 0) + (t.IsIncrease ? " points" : " %");
 }
 
 void PrintGroup(std::ostream& out, const Group& g)
@@ -833,7 +834,7 @@ bool WriteCsv(const std::string& path, const std::vector<Group>& groups, const M
          "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
          "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
          "cube_faces_per_frame,"
-         "renderer\n";
+         "renderer,multisamples\n";
   const char* modes[3] = { "every-frame", "on-change", "manual" };
   for (const Group& g : groups)
   {
@@ -852,7 +853,7 @@ bool WriteCsv(const std::string& path, const std::vector<Group>& groups, const M
           << Fixed(1000.0 / c.Stats.Median, 2) << "," << Fixed(g.Configurations[0].Stats.Median, 3)
           << "," << Fixed(c.Ratio, 4) << "," << Fixed(c.CpuMedian, 3) << ","
           << Fixed(c.CpuRatio, 4) << "," << Fixed(c.CubeFacesPerFrame, 3) << ",\""
-          << machine.Renderer << "\"\n";
+          << machine.Renderer << "\"," << machine.MultiSamples << "\n";
     }
   }
   return out.good();
@@ -867,6 +868,8 @@ bool WriteMarkdown(const std::string& path, const std::vector<Group>& groups,
   out << "| CPU | " << machine.CPU << ", " << machine.Threads << " threads |\n";
   out << "| back end | " << machine.Backend << " |\n";
   out << "| VTK | " << machine.VTK << " |\n";
+  out << "| window | " << Width << "x" << Height << ", multisampling " << machine.MultiSamples
+      << (machine.MultiSamples > 0 ? " samples" : " (off)") << " |\n";
   out << "| frames | " << Width << "x" << Height << " offscreen, " << frames
       << " timed frames per configuration (fewer for frames over 200 ms: see the CSV), glFinish "
          "after each |\n\n";
@@ -1005,6 +1008,7 @@ int main(int argc, char* argv[])
     {
       window->MakeCurrent();
       machine.Renderer = GLString(GL_RENDERER);
+      machine.MultiSamples = window->GetMultiSamples();
       machine.GLVersion = GLString(GL_VERSION);
       std::cout << "ice-bench: " << machine.Renderer << ", " << machine.CPU << " ("
                 << machine.Threads << " threads), " << machine.Backend << "\n"
@@ -1059,7 +1063,8 @@ int main(int argc, char* argv[])
   if (!options.Plot.empty())
   {
     const std::string plotError = IceBench::WritePlot(groups, options.Plot,
-      machine.Renderer + ", " + machine.CPU + ", " + std::to_string(machine.Threads) + " threads");
+      machine.Renderer + ", " + machine.CPU + ", " + std::to_string(machine.Threads) +
+        " threads, multisampling " + std::to_string(machine.MultiSamples));
     if (!plotError.empty())
     {
       return Fail(plotError, 1);

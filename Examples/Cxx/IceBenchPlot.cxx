@@ -164,9 +164,28 @@ void Objects(
   chart->GetAxis(vtkAxis::BOTTOM)->SetBehavior(vtkAxis::FIXED);
   chart->GetAxis(vtkAxis::BOTTOM)->SetRange(0.4, static_cast<double>(rows) + 0.6);
   chart->GetAxis(vtkAxis::LEFT)->SetBehavior(vtkAxis::FIXED);
-  chart->GetAxis(vtkAxis::LEFT)->SetRange(0.0, 3.0);
+  chart->GetAxis(vtkAxis::LEFT)->SetRange(0.0, 3.6);
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
   keep.push_back(table.Get());
   keep.push_back(targets.Get());
+}
+
+// A configuration's label short enough for the left axis of the dynamic chart.
+std::string ShortLabel(std::string label)
+{
+  const std::pair<const char*, const char*> replacements[] = { { "cube map ", "" },
+    { "two-sided, ", "" }, { " faces per frame, 512", " faces/frame" },
+    { " face per frame, 512", " face/frame" }, { ", still scene", ", still" },
+    { ", ball moving", ", moving" }, { "static environment", "static env." } };
+  for (const auto& r : replacements)
+  {
+    const std::string::size_type at = label.find(r.first);
+    if (at != std::string::npos)
+    {
+      label.replace(at, std::string(r.first).size(), r.second);
+    }
+  }
+  return label;
 }
 
 // Ratios of the dynamic-environment configurations as horizontal bars.
@@ -193,7 +212,7 @@ void Dynamic(
     table->SetValue(r, 0, y);
     table->SetValue(r, 1, c.Ratio);
     positions.push_back(y);
-    labels.push_back(c.Label);
+    labels.push_back(ShortLabel(c.Label));
   }
   vtkPlotBar* bars = vtkPlotBar::SafeDownCast(chart->AddPlot(vtkChart::BAR));
   bars->SetOrientation(vtkPlotBar::HORIZONTAL);

@@ -26,7 +26,7 @@ expected = ("group,object,triangles,scene,coverage,configuration,material,cracks
             "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
             "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
             "cube_faces_per_frame,"
-            "renderer").split(",")
+            "renderer,multisamples").split(",")
 problems = []
 with open("bench.csv", newline="") as f:
     rows = list(csv.reader(f))
@@ -58,6 +58,7 @@ for r in data:
                                        "coverage", "cube_faces_per_frame")}
         frames, triangles = int(r["frames"]), int(r["triangles"])
         cracks, air = int(r["cracks"]), int(r["air_planes"])
+        samples = int(r["multisamples"])
     except ValueError as e:
         problems.append("%s: not a number: %s" % (where, e))
         continue
@@ -75,7 +76,7 @@ for r in data:
         problems.append("%s: fps is not 1000 / median" % where)
     if frames != 4:
         problems.append("%s: %d frames, --quick times 4" % (where, frames))
-    if triangles <= 0 or cracks < 0 or air < 0:
+    if triangles <= 0 or cracks < 0 or air < 0 or samples < 0:
         problems.append("%s: bad counts" % where)
     if not 0.15 <= t["coverage"] <= 0.25:
         problems.append("%s: coverage %.3f is not about 1/5" % (where, t["coverage"]))
