@@ -57,8 +57,8 @@ const char* const Usage =
   "Times ice against plain VTK (same scene, a vtkPolyDataMapper with Phong shading) at\n"
   "1024x768, offscreen, glFinish after every frame, and prints a table of medians and ratios.\n"
   "  --quick     a few configurations and frames (under a minute)\n"
-  "  --frames N  timed frames per configuration (default 30, quick 4), after warm-up; in a\n"
-  "              full run configurations slower than 200 ms a frame get fewer (at least 6)\n"
+  "  --frames N  timed frames per configuration (default 20, quick 4), after warm-up; in a\n"
+  "              full run configurations slower than 200 ms a frame get fewer (at least 5)\n"
   "  --csv       the results as CSV (default ice-bench.csv; '' for none)\n"
   "  --plot      a PNG of ratios and scaling curves (default none)\n"
   "  --markdown  the tables and the machine as Markdown (default none)\n"
@@ -536,8 +536,8 @@ double ProcessCpuMilliseconds()
 struct Schedule
 {
   int WarmUp = 3;   // untimed frames per configuration before the first round
-  int Rounds = 6;   // every configuration of a group takes its turn once per round
-  int PerRound = 5; // timed frames per turn, after one untimed frame
+  int Rounds = 5;   // every configuration of a group takes its turn once per round
+  int PerRound = 4; // timed frames per turn, after one untimed frame
   // When positive, a turn of a slow configuration takes about this many milliseconds: fewer
   // timed frames (at least one per round), no untimed frame after the switch for frames over
   // SlowFrame ms, and two warm-up frames. Keeps the full run within minutes.
@@ -785,7 +785,8 @@ std::string TargetVerdict(const IceBench::Target& t)
 void PrintGroup(std::ostream& out, const Group& g)
 {
   out << "\n== " << g.Title << "\n   " << g.Triangles << " triangles, object covers "
-      << CoverageText(g) << " of " << Width << "x" << Height << "\n";
+      << CoverageText(g) << " of " << Width << "x" << Height << ", " << Fixed(g.Seconds, 1)
+      << " s\n";
   out << "   " << std::left << std::setw(42) << "configuration" << std::right << std::setw(10)
       << "median ms" << std::setw(18) << "IQR ms" << std::setw(9) << "fps" << std::setw(8)
       << "ratio" << std::setw(10) << "CPU ms" << std::setw(10) << "CPU ratio"
@@ -924,11 +925,11 @@ int main(int argc, char* argv[])
   }
   else
   {
-    schedule.TurnBudget = 1000.0;
+    schedule.TurnBudget = 800.0;
   }
   if (options.Frames > 0)
   {
-    schedule.PerRound = std::min(options.Frames, options.Quick ? 2 : 5);
+    schedule.PerRound = std::min(options.Frames, options.Quick ? 2 : 4);
     schedule.Rounds = (options.Frames + schedule.PerRound - 1) / schedule.PerRound;
   }
   const int frames = schedule.Rounds * schedule.PerRound;
@@ -1019,6 +1020,7 @@ int main(int argc, char* argv[])
                 << "), multisamples " << window->GetMultiSamples() << "\n";
     }
 
+    const auto groupStarted = std::chrono::steady_clock::now();
     std::vector<Scene> scenes;
     for (Configuration& c : g.Configurations)
     {
@@ -1034,6 +1036,8 @@ int main(int argc, char* argv[])
       scene.Renderer->ReleaseGraphicsResources(window);
       window->RemoveRenderer(scene.Renderer);
     }
+    g.Seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - groupStarted).count();
     PrintGroup(std::cout, g);
     std::cout.flush();
   }

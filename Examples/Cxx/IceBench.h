@@ -63,6 +63,7 @@ struct Group
   long long Triangles = 0;
   double MeasuredCoverage = 0.0;
   double CameraDistance = 0.0;
+  double Seconds = 0.0; // building, warming up and timing the group
 };
 
 // The ratio a target compares and whether it is met.
