@@ -3,6 +3,7 @@
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
 #   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~9 min)
+#   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
 # run again through EGL with no DISPLAY at all (Documentation/headless.md).
@@ -35,6 +36,10 @@ case "$command" in
     build
     "$build_dir/bin/ice-render" "$@"
     ;;
+  bench)
+    build
+    "$build_dir/bin/ice-bench" "$@"
+    ;;
   test)
     build
     status=0
@@ -51,6 +56,7 @@ case "$command" in
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
       "| ./ice.sh soak [frames] [seed]" >&2
+      "| ./ice.sh bench [ice-bench options]" >&2
     exit 2
     ;;
 esac

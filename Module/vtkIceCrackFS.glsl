@@ -7,6 +7,13 @@ uniform float iceCrackIntensity;
 uniform float iceBumpStrength;
 uniform float iceBumpFrequency;
 
+//ICE::Interval
+  // The ice's depth interval here; outside it nothing is drawn, so leave before the bump mapping.
+  vec2 iceInterval = texelFetch(iceDepthInterval, iceScreenTexel(), 0).rg;
+  if (iceCrackClip == 1 && (iceViewDepth() < iceInterval.x || iceViewDepth() > iceInterval.y))
+  {
+    discard;
+  }
 //ICE::Normal
   {
     // Bump mapping: tilt the normal by the gradient of a noise field fixed to the crack.
@@ -15,9 +22,7 @@ uniform float iceBumpFrequency;
   }
 //ICE::Impl
   {
-    vec2 interval = texelFetch(iceDepthInterval, iceScreenTexel(), 0).rg;
-    float depth = iceViewDepth();
-    if (iceCrackClip == 1 && (depth < interval.x || depth > interval.y)) { discard; }
+    vec2 interval = iceInterval;
     // Only the specular highlight shows; where there is none the crack adds nothing.
     gl_FragData[0] = iceCrackDebug == 1 ? vec4(1.0, 0.0, 0.0, 1.0)
                                         : vec4(iceCrackIntensity * gl_FragData[0].rgb, 1.0);

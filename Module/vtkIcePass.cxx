@@ -4,6 +4,7 @@
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceMapper.h"
+#include "vtkIceScreenRegion.h"
 
 #include "vtkActor.h"
 #include "vtkDualDepthPeelingPass.h"
@@ -21,7 +22,9 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
 #include "vtkRenderer.h"
+#include "vtk_glew.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace
@@ -75,6 +78,19 @@ public:
   const vtkRenderState* IceState = nullptr;  // the ice props, while the frame renders
 };
 vtkStandardNewMacro(vtkIceOverlayStep);
+
+namespace
+{
+// Whether `mapper` reads the depth interval this frame: its cracks and air planes are clipped by
+// it and drawn at the ice's front depth, and the debug views show it. Without any such reader the pass
+// is skipped (two geometry passes less). A new mapper feature that samples the depth interval
+// texture must be added here.
+bool NeedsDepthInterval(vtkIceMapper* mapper)
+{
+  return mapper->GetNumberOfCracks() > 0 || mapper->GetNumberOfAirPlanes() > 0 ||
+    mapper->GetDebugView() != vtkIceMapper::DebugOff;
+}
+}
 
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
@@ -166,11 +182,14 @@ void vtkIcePass::Render(const vtkRenderState* s)
       this->CubeMapPass->Render(&iceState);
       this->CubeMapPass->AttachCubeMaps(&iceState);
     }
-    this->DepthIntervalPass->Render(&iceState);
-    for (vtkIceMapper* mapper : iceMappers)
+    if (std::any_of(iceMappers.begin(), iceMappers.end(), NeedsDepthInterval))
     {
-      mapper->SetDepthIntervalTexture(this->DepthIntervalPass->GetDepthTexture());
-      mapper->SetDepthRange(this->DepthIntervalPass->GetDepthRange());
+      this->DepthIntervalPass->Render(&iceState);
+      for (vtkIceMapper* mapper : iceMappers)
+      {
+        mapper->SetDepthIntervalTexture(this->DepthIntervalPass->GetDepthTexture());
+        mapper->SetDepthRange(this->DepthIntervalPass->GetDepthRange());
+      }
     }
     this->BackfaceNormalPass->Render(&iceState);
     for (vtkIceMapper* mapper : iceMappers)
@@ -214,6 +233,8 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
     static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglScissor scissorSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+  state->vtkglEnable(GL_SCISSOR_TEST);
   // The renderer's area of the target the delegate drew into, as vtkCameraPass sets it.
   int size[2];
   int origin[2] = { 0, 0 };
@@ -236,7 +257,18 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];
-    vtkIceMapper::GetIceMapperOf(prop)->RenderCracks(renderer, static_cast<vtkActor*>(prop), true);
+    vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(prop);
+    // Clipped cracks show only inside the ice's projected bounding box (elsewhere the depth
+    // interval is empty, or the crack geometry is already cut to the ice): scissor them there,
+    // so the parts of the sheets that stick out are never rasterised.
+    int covered[4] = { 0, 0, size[0], size[1] };
+    if (mapper->GetDebugView() != vtkIceMapper::DebugCracksUnclipped)
+    {
+      vtkIceScreenRegion::Covered(renderer, &prop, 1, size[0], size[1], covered);
+    }
+    state->vtkglScissor(origin[0] + covered[0], origin[1] + covered[1], covered[2] - covered[0],
+      covered[3] - covered[1]);
+    mapper->RenderCracks(renderer, static_cast<vtkActor*>(prop), true);
   }
 }
 

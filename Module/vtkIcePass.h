@@ -15,6 +15,7 @@
  *    the scene around it (dynamic environment); without one, the renderer's environment texture
  *    is used (static environment),
  * 2. depth interval (vtkIceDepthIntervalPass: front and back depth of the ice, for the cracks),
+ *    only when an ice mapper has cracks or a debug view,
  * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
  * Right after the opaque geometry (before translucent geometry, when the delegate is the default
  * one; after the delegate otherwise) it draws the ice mappers' air planes (blended back to front)

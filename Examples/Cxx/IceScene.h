@@ -24,6 +24,10 @@ vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& er
 // an equirectangular (2:1) panorama, 8-bit or HDR. Returns nullptr and sets `error` on failure.
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error);
 
+// Adds the landscape of the default scene: a checkered ground at `groundHeight`, five rocks and
+// six pine trees within 8 units of the origin, the sky's sun and a soft headlight.
+void AddLandscape(vtkRenderer* renderer, double groundHeight);
+
 struct Options
 {
   // A ground with rocks and trees around the ice, lit by the sky's sun.

@@ -1,0 +1,243 @@
+// The ice passes skip work that does not show, without changing a pixel: the depth-interval pass
+// runs only when something reads it; the back-normal and depth-interval textures are cleared
+// only where the ice is or was, and cracks are scissored to the ice, so ice moving across the
+// screen (partly off it, and with the camera inside its bounds) renders exactly what a fresh
+// window renders; and copying the skybox into the cube-map faces gives the same picture as
+// drawing it, at the default face size and a scaled one.
+#include "IceScene.h"
+#include "IceTestUtilities.h"
+#include "vtkIceBlockSource.h"
+#include "vtkIceBackfaceNormalPass.h"
+#include "vtkIceCubeMapPass.h"
+#include "vtkIceCubeMapSource.h"
+#include "vtkIceDepthIntervalPass.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkNew.h"
+#include "vtkPixelBufferObject.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+
+namespace
+{
+bool Expect(bool condition, const std::string& what)
+{
+  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
+  return condition;
+}
+
+// A cracked ice block whose cracks also bend the refraction: every texture the passes clear
+// by region is read.
+struct Scene
+{
+  vtkNew<vtkIceBlockSource> Block;
+  vtkNew<vtkIceMapper> Mapper;
+  vtkNew<vtkActor> Ice;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkIcePass> Pass;
+  vtkNew<vtkRenderWindow> Window;
+
+  Scene()
+  {
+    this->Mapper->SetInputConnection(this->Block->GetOutputPort());
+    this->Mapper->SetNumberOfCracks(4);
+    this->Mapper->CracksPerturbRefractionOn();
+    this->Ice->SetMapper(this->Mapper);
+    this->Renderer->AddActor(this->Ice);
+    this->Renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 128));
+    this->Renderer->SetBackground(0.1, 0.1, 0.1);
+    this->Renderer->SetPass(this->Pass);
+    this->Window->SetSize(240, 200);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->AddRenderer(this->Renderer);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(0.0, 0.5, 6.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetClippingRange(0.05, 20.0);
+  }
+
+  IceTest::Image RenderAt(const double position[3])
+  {
+    this->Ice->SetPosition(position[0], position[1], position[2]);
+    this->Window->Render();
+    return IceTest::Capture(this->Window);
+  }
+};
+
+// The texels of a float texture of the passes.
+std::vector<float> Texels(vtkTextureObject* texture)
+{
+  std::vector<float> values;
+  vtkPixelBufferObject* buffer = texture ? texture->Download() : nullptr;
+  if (!buffer)
+  {
+    return values;
+  }
+  const size_t count = static_cast<size_t>(texture->GetWidth()) * texture->GetHeight() *
+    static_cast<size_t>(texture->GetComponents());
+  const float* data = static_cast<const float*>(buffer->MapPackedBuffer());
+  values.assign(data, data + count);
+  buffer->UnmapPackedBuffer();
+  buffer->Delete();
+  return values;
+}
+
+// Texels that differ between two downloads (all of them when the sizes differ).
+size_t Differing(const std::vector<float>& a, const std::vector<float>& b)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return std::max<size_t>(std::max(a.size(), b.size()), 1);
+  }
+  size_t count = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    count += a[i] != b[i] ? 1 : 0;
+  }
+  return count;
+}
+
+bool DepthIntervalOnlyWhenRead()
+{
+  Scene scene;
+  bool ok = true;
+  auto passesPerFrame = [&]() {
+    scene.Window->Render();
+    const vtkIdType before = scene.Pass->GetDepthIntervalPass()->GetNumberOfGeometryPasses();
+    scene.Window->Render();
+    const vtkIdType passes =
+      scene.Pass->GetDepthIntervalPass()->GetNumberOfGeometryPasses() - before;
+    std::cout << "depth-interval geometry passes per frame: " << passes << "\n";
+    return passes;
+  };
+  scene.Mapper->CracksPerturbRefractionOff();
+  scene.Mapper->SetNumberOfCracks(0);
+  scene.Mapper->SetNumberOfAirPlanes(0);
+  ok = Expect(passesPerFrame() == 0, "no cracks, no air, no debug view: no depth-interval pass") &&
+    ok;
+  scene.Mapper->SetNumberOfAirPlanes(19);
+  ok = Expect(passesPerFrame() == 2, "air: the depth-interval pass runs") && ok;
+  scene.Mapper->SetNumberOfAirPlanes(0);
+  scene.Mapper->SetDebugView(vtkIceMapper::DebugBackDepth);
+  ok = Expect(passesPerFrame() == 2, "a depth debug view: the depth-interval pass runs") && ok;
+  scene.Mapper->SetDebugView(vtkIceMapper::DebugOff);
+  scene.Mapper->SetNumberOfCracks(2);
+  ok = Expect(passesPerFrame() == 2, "cracks: the depth-interval pass runs") && ok;
+  return ok;
+}
+
+bool MovingIce(int debugView)
+{
+  // Across the screen, partly off its left and bottom edges, then around the camera (the
+  // camera inside the ice's bounds: the whole viewport is cleared), then back.
+  const double positions[][3] = { { -1.5, 0.5, 0.0 }, { 1.8, -0.4, 0.5 }, { -3.2, -2.3, 0.0 },
+    { 0.0, 0.5, 5.6 }, { 0.3, 0.0, -1.0 } };
+  Scene moving;
+  moving.Mapper->SetDebugView(debugView);
+  bool ok = true;
+  for (const auto& position : positions)
+  {
+    const IceTest::Image reused = moving.RenderAt(position);
+    Scene fresh;
+    fresh.Mapper->SetDebugView(debugView);
+    const IceTest::Image expected = fresh.RenderAt(position);
+    // Not only the picture: the textures too, where nothing reads them (outside the ice) and
+    // where cleared by region they must hold their clear values as in a fresh window.
+    moving.Window->MakeCurrent();
+    const std::vector<float> movedNormals =
+      Texels(moving.Pass->GetBackfaceNormalPass()->GetNormalTexture());
+    const std::vector<float> movedInterval =
+      Texels(moving.Pass->GetDepthIntervalPass()->GetDepthTexture());
+    fresh.Window->MakeCurrent();
+    const size_t normals =
+      Differing(movedNormals, Texels(fresh.Pass->GetBackfaceNormalPass()->GetNormalTexture()));
+    const size_t interval =
+      Differing(movedInterval, Texels(fresh.Pass->GetDepthIntervalPass()->GetDepthTexture()));
+    ok = Expect(normals == 0 && interval == 0,
+           "textures after the move equal a fresh window's (" + std::to_string(normals) +
+             " back-normal and " + std::to_string(interval) + " depth-interval texels differ)") &&
+      ok;
+    int largest = 0;
+    for (int y = 0; y < reused.Height; ++y)
+    {
+      for (int x = 0; x < reused.Width; ++x)
+      {
+        largest = std::max(largest, IceTest::PixelDifference(reused.At(x, y), expected.At(x, y)));
+      }
+    }
+    ok = Expect(largest == 0,
+           std::string(debugView ? "unclipped cracks: " : "") + "ice moved to (" +
+             std::to_string(position[0]) + ", " + std::to_string(position[1]) + ", " +
+             std::to_string(position[2]) + ") renders as in a fresh window (largest " +
+             "difference " + std::to_string(largest) + "/255)") &&
+      ok;
+  }
+  return ok;
+}
+
+bool SkyboxCopy()
+{
+  std::string error;
+  vtkSmartPointer<vtkPolyData> model = IceScene::LoadModel("teapot", error);
+  vtkSmartPointer<vtkTexture> environment = IceScene::LoadEnvironment("sky", error);
+  if (!model || !environment)
+  {
+    std::cerr << error << "\n";
+    return false;
+  }
+  bool ok = true;
+  for (int faceSize : { 512, 200 })
+  {
+    IceTest::Image images[2];
+    for (int copy = 0; copy < 2; ++copy)
+    {
+      vtkNew<vtkRenderer> renderer;
+      IceScene::Populate(renderer, model, environment);
+      vtkIcePass* icePass = vtkIcePass::SafeDownCast(renderer->GetPass());
+      icePass->GetCubeMapPass()->SetFaceSize(faceSize);
+      icePass->GetCubeMapPass()->SetCopySkybox(copy == 1);
+      vtkNew<vtkRenderWindow> window;
+      window->SetSize(400, 300);
+      window->SetOffScreenRendering(1);
+      window->AddRenderer(renderer);
+      window->Render();
+      images[copy] = IceTest::Capture(window);
+    }
+    std::vector<double> differences;
+    for (int y = 0; y < images[0].Height; ++y)
+    {
+      for (int x = 0; x < images[0].Width; ++x)
+      {
+        differences.push_back(IceTest::PixelDifference(images[0].At(x, y), images[1].At(x, y)));
+      }
+    }
+    const IceTest::Stats stats = IceTest::Summarize(differences);
+    ok = Expect(stats.Mean <= 0.05 && stats.Max <= 2.0,
+           "faces of " + std::to_string(faceSize) + ": skybox copied vs drawn, mean " +
+             std::to_string(stats.Mean) + "/255, largest " + std::to_string(stats.Max) + "/255") &&
+      ok;
+  }
+  return ok;
+}
+}
+
+int TestIcePassWork(int, char*[])
+{
+  bool ok = DepthIntervalOnlyWhenRead();
+  ok = MovingIce(vtkIceMapper::DebugOff) && ok;
+  // Unclipped cracks read the depth interval outside the ice too (at their own depth where
+  // there is no ice): what the ice left behind must be cleared.
+  ok = MovingIce(vtkIceMapper::DebugCracksUnclipped) && ok;
+  ok = SkyboxCopy() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
