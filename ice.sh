@@ -2,7 +2,8 @@
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
-#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~9 min)
+#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~10 min)
+#   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
@@ -16,10 +17,11 @@ xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
 build() {
   bash .ci/install-deps.sh
   if [ ! -f "$build_dir/build.ninja" ]; then
-    cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+    cmake -S . -B "$build_dir" -G Ninja "${configure_options[@]}"
   fi
   cmake --build "$build_dir"
 }
+configure_options=(-DCMAKE_BUILD_TYPE=Release)
 
 with_display() {
   if [ -n "${DISPLAY:-}" ] && command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1; then
@@ -40,7 +42,13 @@ case "$command" in
     build
     "$build_dir/bin/ice-bench" "$@"
     ;;
-  test)
+  test | sanitize)
+    if [ "$command" = sanitize ]; then
+      # AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer: a Debug build of
+      # its own; the tests get the sanitizers' options from CMake (Documentation/reliability.md).
+      build_dir=${VTKICE_SANITIZE_BUILD_DIR:-build-asan}
+      configure_options=(-DCMAKE_BUILD_TYPE=Debug -DVTKICE_SANITIZE=ON)
+    fi
     build
     status=0
     with_display ctest --test-dir "$build_dir" --output-on-failure "$@" || status=1
@@ -55,7 +63,7 @@ case "$command" in
     ;;
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
-      "| ./ice.sh soak [frames] [seed]" >&2
+      "| ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options]" >&2
     exit 2
     ;;

@@ -8,6 +8,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -29,16 +30,18 @@ struct Library
 };
 
 // The loaded library; loaded once per path and never unloaded (Mesa does not support that).
+// The list is never destroyed either: OSMesa contexts may outlive static destruction, and a
+// destroyed list would leave its libraries unreachable (LeakSanitizer reported them).
 const Library* Load(std::string& error)
 {
-  static std::vector<Library*> loaded;
+  static auto* const loaded = new std::vector<std::unique_ptr<Library>>();
   const char* configured = std::getenv("VTKICE_OSMESA_LIBRARY");
   const std::string path = configured && *configured ? configured : "libOSMesa.so.8";
-  for (const Library* library : loaded)
+  for (const auto& library : *loaded)
   {
     if (library->Path == path)
     {
-      return library;
+      return library.get();
     }
   }
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -49,7 +52,7 @@ const Library* Load(std::string& error)
       " (Debian: apt-get install libosmesa6)";
     return nullptr;
   }
-  auto library = new Library;
+  auto library = std::make_unique<Library>();
   library->Path = path;
   library->Handle = handle;
   auto symbol = [&](const char* name, auto& function) {
@@ -63,12 +66,11 @@ const Library* Load(std::string& error)
     !symbol("OSMesaGetProcAddress", library->GetProcAddress))
   {
     error = path + " is not an OSMesa library with OSMesaCreateContextAttribs (Mesa >= 11.2)";
-    delete library;
     dlclose(handle);
     return nullptr;
   }
-  loaded.push_back(library);
-  return library;
+  loaded->push_back(std::move(library));
+  return loaded->back().get();
 }
 
 class OSMesaContextImpl : public Context
