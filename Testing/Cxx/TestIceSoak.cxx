@@ -57,8 +57,9 @@ void ConfigureFullIce(vtkIceMapper* mapper, int seed)
   mapper->SetNumberOfCracks(6);
   mapper->SetCrackSeed(seed);
   mapper->SetCrackIntensity(1.5);
-  // AIR: when vtkIceMapper has air bubbles (being added on main), turn them on here with one
-  // line, so that the soak and the valgrind run cover them too.
+  mapper->SetNumberOfAirPlanes(19);
+  mapper->SetAirSeed(seed);
+  mapper->SetBumpStrength(0.1);
 }
 
 // The full ice pass: two-sided refraction, depth interval and cracks, and a dynamic cube map of
