@@ -15,12 +15,10 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLTexture.h"
 #include "vtkProp3D.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
-#include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
@@ -78,31 +76,6 @@ bool IntersectsFace(const double bounds[6], const double center[3], int face)
     }
   }
   return true;
-}
-
-// The skybox whose texture can be copied into the faces instead of drawing it (see CopySkybox),
-// or null.
-vtkSkybox* CopyableSkybox(const std::vector<vtkProp*>& scene)
-{
-  vtkSkybox* found = nullptr;
-  for (vtkProp* prop : scene)
-  {
-    if (vtkSkybox* sky = vtkSkybox::SafeDownCast(prop))
-    {
-      if (found)
-      {
-        return nullptr; // two skyboxes: the order they are drawn in matters
-      }
-      found = sky;
-    }
-  }
-  vtkTexture* texture = found ? found->GetTexture() : nullptr;
-  if (!texture || !texture->GetCubeMap() || found->GetProjection() != vtkSkybox::Cube ||
-    found->GetGammaCorrect() || !found->GetIsIdentity())
-  {
-    return nullptr;
-  }
-  return found;
 }
 
 void HashCombine(size_t& seed, size_t value)
@@ -174,7 +147,6 @@ public:
   };
   std::map<vtkProp*, CubeMap> Maps;
   vtkSmartPointer<vtkOpenGLFramebufferObject> FrameBuffer;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> SkyFrameBuffer; // reads the skybox's faces
   vtkNew<vtkCamera> FaceCamera;
   vtkNew<vtkTransform> LightTransform;
   bool UpdateRequested = false;
@@ -185,8 +157,6 @@ public:
 
 private:
   void Allocate(vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map);
-  // Copies face `face` of the skybox's texture into the bound face; false if it cannot.
-  bool CopySkyFace(vtkOpenGLRenderer* renderer, vtkSkybox* sky, int face, int size);
   void SetupCamera(int face, const double center[3], const std::vector<vtkProp*>& scene,
     vtkCamera* mainCamera);
 };
@@ -219,51 +189,6 @@ void vtkIceCubeMapPass::vtkInternals::Allocate(
     this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     this->FrameBuffer->SetContext(window);
   }
-}
-
-//------------------------------------------------------------------------------
-bool vtkIceCubeMapPass::vtkInternals::CopySkyFace(
-  vtkOpenGLRenderer* renderer, vtkSkybox* sky, int face, int size)
-{
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  vtkOpenGLTexture* texture = vtkOpenGLTexture::SafeDownCast(sky->GetTexture());
-  if (!texture)
-  {
-    return false;
-  }
-  // Upload the texture if it changed, as drawing the skybox would.
-  texture->Render(renderer);
-  texture->PostRender(renderer);
-  vtkTextureObject* source = texture->GetTextureObject();
-  // An RGB texture: alpha would blend the skybox with the background when drawn.
-  if (!source || source->GetTarget() != GL_TEXTURE_CUBE_MAP || source->GetComponents() == 4 ||
-    source->GetComponents() == 2 || source->GetWidth() != source->GetHeight() ||
-    (static_cast<int>(source->GetWidth()) != size && texture->GetMipmap()))
-  {
-    return false;
-  }
-  if (!this->SkyFrameBuffer || this->SkyFrameBuffer->GetContext() != window)
-  {
-    this->SkyFrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->SkyFrameBuffer->SetContext(window);
-  }
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->PushReadFramebufferBinding();
-  this->SkyFrameBuffer->Bind(GL_READ_FRAMEBUFFER); // creates the framebuffer the first time
-  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
-    GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, source->GetHandle(), 0);
-  state->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
-  const int from = static_cast<int>(source->GetWidth());
-  // Same size: texel for texel, what the skybox samples at the texel centres. Otherwise scaled
-  // with the texture's own filtering, which the skybox would apply at the same points.
-  const bool linear = from != size && texture->GetInterpolate();
-  state->vtkglBlitFramebuffer(
-    0, 0, from, from, 0, 0, size, size, GL_COLOR_BUFFER_BIT, linear ? GL_LINEAR : GL_NEAREST);
-  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
-  state->PopReadFramebufferBinding();
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -338,7 +263,6 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
     }
   }
   pass->NumberOfCulledProps += static_cast<vtkIdType>(scene.size() - visible.size());
-  vtkSkybox* sky = pass->CopySkybox ? CopyableSkybox(visible) : nullptr;
 
   vtkSmartPointer<vtkCamera> mainCamera = renderer->GetActiveCamera();
   this->SetupCamera(face, center, scene, mainCamera);
@@ -356,24 +280,11 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   this->FrameBuffer->ActivateBuffer(0);
   this->FrameBuffer->Start(pass->FaceSize, pass->FaceSize);
 
-  // The skybox covers the whole face: start from a copy of it and keep the colour buffer.
-  const bool skyCopied = sky && this->CopySkyFace(renderer, sky, face, pass->FaceSize);
-  const vtkTypeBool preserveColor = renderer->GetPreserveColorBuffer();
-  if (skyCopied)
-  {
-    visible.erase(std::find(visible.begin(), visible.end(), sky));
-    renderer->PreserveColorBufferOn();
-  }
-
   vtkRenderState faceState(renderer);
   faceState.SetPropArrayAndCount(visible.data(), static_cast<int>(visible.size()));
   faceState.SetFrameBuffer(this->FrameBuffer);
   pass->DelegatePass->Render(&faceState);
   pass->NumberOfRenderedProps += pass->DelegatePass->GetNumberOfRenderedProps();
-  if (skyCopied)
-  {
-    renderer->SetPreserveColorBuffer(preserveColor);
-  }
 
   this->FrameBuffer->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
@@ -524,11 +435,6 @@ void vtkIceCubeMapPass::ReleaseGraphicsResources(vtkWindow* w)
     this->Internals->FrameBuffer->ReleaseGraphicsResources(w);
     this->Internals->FrameBuffer = nullptr;
   }
-  if (this->Internals->SkyFrameBuffer)
-  {
-    this->Internals->SkyFrameBuffer->ReleaseGraphicsResources(w);
-    this->Internals->SkyFrameBuffer = nullptr;
-  }
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);
@@ -544,7 +450,6 @@ void vtkIceCubeMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FaceSize: " << this->FaceSize << "\n";
   os << indent << "FacesPerFrame: " << this->FacesPerFrame << "\n";
   os << indent << "FrustumCulling: " << (this->FrustumCulling ? "On" : "Off") << "\n";
-  os << indent << "CopySkybox: " << (this->CopySkybox ? "On" : "Off") << "\n";
   os << indent << "NumberOfFaceRenders: " << this->NumberOfFaceRenders << "\n";
   os << indent << "NumberOfCulledProps: " << this->NumberOfCulledProps << "\n";
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";

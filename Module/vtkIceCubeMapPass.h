@@ -13,9 +13,8 @@
  * - OnChange (default): when something the cube map shows changed (props added, removed, moved,
  *   modified, lights, background, the ice prop's own position), not when only the camera moves.
  * - Manual: once, then only after Update().
- * Cost control: props are culled against each face's frustum (FrustumCulling), FacesPerFrame < 6
- * spreads an update over several frames (time slicing), and a skybox is copied into the faces
- * rather than drawn (CopySkybox).
+ * Cost control: props are culled against each face's frustum (FrustumCulling), and
+ * FacesPerFrame < 6 spreads an update over several frames (time slicing).
  *
  * Without this pass the ice reflects the renderer's environment texture (a static environment).
  */
@@ -87,19 +86,6 @@ public:
 
   ///@{
   /**
-   * Seen from inside, a cube-projection vtkSkybox shows its cube-map texture unchanged: each face
-   * of the cube map starts as a copy of that texture's face (a blit, scaled when the sizes
-   * differ) and the skybox is not drawn, instead of sampling the whole face in a shader. Used
-   * when the scene has one visible vtkSkybox with the cube projection, no transform, no gamma
-   * correction and an opaque (RGB) cube-map texture; otherwise the skybox is drawn. Default on.
-   */
-  vtkSetMacro(CopySkybox, bool);
-  vtkGetMacro(CopySkybox, bool);
-  vtkBooleanMacro(CopySkybox, bool);
-  ///@}
-
-  ///@{
-  /**
    * The pass that renders the scene into each face. Default: a vtkRenderStepsPass.
    */
   virtual void SetDelegatePass(vtkRenderPass* pass);
@@ -145,7 +131,6 @@ protected:
   int FaceSize = 512;
   int FacesPerFrame = 6;
   bool FrustumCulling = true;
-  bool CopySkybox = true;
   vtkRenderPass* DelegatePass = nullptr;
   vtkIdType NumberOfFaceRenders = 0;
   vtkIdType NumberOfCulledProps = 0;
