@@ -2,7 +2,7 @@
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
-#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~10 min)
+#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~5 min)
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh valgrind [frames]            build, then valgrind memcheck on one full-ice run
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
