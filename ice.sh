@@ -2,9 +2,10 @@
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
-#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~10 min)
+#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~5 min)
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
+#   ./ice.sh valgrind [frames]            build, then valgrind memcheck on one full-ice run
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
 # run again through EGL with no DISPLAY at all (Documentation/headless.md).
@@ -61,10 +62,14 @@ case "$command" in
     build
     exec Testing/Scripts/soak.sh "$@"
     ;;
+  valgrind)
+    build
+    exec Testing/Scripts/valgrind.sh "$@"
+    ;;
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
       "| ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
-      "| ./ice.sh bench [ice-bench options]" >&2
+      "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" >&2
     exit 2
     ;;
 esac

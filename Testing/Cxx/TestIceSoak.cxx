@@ -9,7 +9,7 @@
 // After the first cycle (warm-up) the number of OpenGL objects of each kind must not grow and
 // memory must stay flat.
 //
-//   IceCxxTests TestIceSoak [--frames N] [--seed S] [--keep-going]
+//   IceCxxTests TestIceSoak [--frames N] [--seed S] [--keep-going] [--small]
 // 300 frames by default (ctest); the long soak (Testing/Scripts/soak.sh) runs 10 000 and keeps
 // going after a failure to report every figure.
 #include "IceTestResources.h"
@@ -64,20 +64,27 @@ void ConfigureFullIce(vtkIceMapper* mapper, int seed)
 
 // The full ice pass: two-sided refraction, depth interval and cracks, and a dynamic cube map of
 // the scene rendered for every ice prop every frame.
-vtkSmartPointer<vtkIcePass> MakeFullIcePass()
+vtkSmartPointer<vtkIcePass> MakeFullIcePass(int faceSize)
 {
   auto pass = vtkSmartPointer<vtkIcePass>::New();
   vtkNew<vtkIceCubeMapPass> cubeMaps;
   cubeMaps->SetUpdateModeToEveryFrame();
-  cubeMaps->SetFaceSize(64);
+  cubeMaps->SetFaceSize(faceSize);
   pass->SetCubeMapPass(cubeMaps);
   return pass;
 }
 //------------------------------------------------------------------------------
 
 const int CycleLength = 100;
-const int MaxSize[2] = { 320, 240 };
-const int ReferenceSize[2] = { 200, 150 };
+// Window sizes and cube faces; --small quarters the pixels (for valgrind, Testing/Scripts).
+struct Sizes
+{
+  int Max[2];
+  int Reference[2];
+  int Face;
+};
+const Sizes Normal = { { 320, 240 }, { 200, 150 }, 64 };
+const Sizes Small = { { 160, 120 }, { 100, 75 }, 32 };
 
 struct IceObject
 {
@@ -89,8 +96,9 @@ struct IceObject
 class Soak
 {
 public:
-  explicit Soak(unsigned int seed)
+  Soak(unsigned int seed, const Sizes& sizes)
     : Seed(seed)
+    , Size(sizes)
     , Random(seed)
   {
     this->Environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 64);
@@ -100,10 +108,10 @@ public:
     skybox->SetTexture(this->Environment);
     this->Renderer->AddActor(skybox);
     this->AddScene();
-    this->Pass = MakeFullIcePass();
+    this->Pass = MakeFullIcePass(this->Size.Face);
     this->Renderer->SetPass(this->Pass);
     this->Window->SetOffScreenRendering(1);
-    this->Window->SetSize(ReferenceSize[0], ReferenceSize[1]);
+    this->Window->SetSize(this->Size.Reference[0], this->Size.Reference[1]);
     this->Window->AddRenderer(this->Renderer);
     vtkCamera* camera = this->Renderer->GetActiveCamera();
     camera->SetFocalPoint(0.0, 0.0, 0.0);
@@ -125,6 +133,7 @@ private:
   bool ReportMemory() const;
 
   unsigned int Seed;
+  Sizes Size;
   std::mt19937 Random;
   vtkSmartPointer<vtkTexture> Environment;
   vtkNew<vtkRenderer> Renderer;
@@ -258,12 +267,14 @@ void Soak::Event(int frame)
       // memory.
       if (cycle == 0)
       {
-        this->Window->SetSize(MaxSize[0], MaxSize[1]);
+        this->Window->SetSize(this->Size.Max[0], this->Size.Max[1]);
       }
       else
       {
-        this->Window->SetSize(std::uniform_int_distribution<int>(48, MaxSize[0])(this->Random),
-          std::uniform_int_distribution<int>(32, MaxSize[1])(this->Random));
+        this->Window->SetSize(std::uniform_int_distribution<int>(
+                                this->Size.Max[0] / 6, this->Size.Max[0])(this->Random),
+          std::uniform_int_distribution<int>(this->Size.Max[1] / 6, this->Size.Max[1])(
+            this->Random));
       }
       ++this->Resizes;
       break;
@@ -308,7 +319,7 @@ void Soak::Event(int frame)
       if (cycle % 2 == 0)
       {
         // The old pass is deleted here, with its textures, framebuffers and cube maps.
-        this->Pass = MakeFullIcePass();
+        this->Pass = MakeFullIcePass(this->Size.Face);
         ++this->NewPasses;
       }
       this->Renderer->SetPass(this->Pass);
@@ -318,7 +329,7 @@ void Soak::Event(int frame)
       this->RemoveIce(any(this->Ice.size()));
       if (frame % CycleLength == 80)
       {
-        this->Window->SetSize(ReferenceSize[0], ReferenceSize[1]);
+        this->Window->SetSize(this->Size.Reference[0], this->Size.Reference[1]);
         ++this->Resizes;
       }
       break;
@@ -504,6 +515,7 @@ int TestIceSoak(int argc, char* argv[])
   int frames = 300;
   unsigned int seed = 12345;
   bool keepGoing = false;
+  bool small = false;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
@@ -514,11 +526,15 @@ int TestIceSoak(int argc, char* argv[])
     {
       keepGoing = true;
     }
+    else if (!std::strcmp(argv[i], "--small"))
+    {
+      small = true;
+    }
     else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc)
     {
       seed = static_cast<unsigned int>(std::strtoul(argv[++i], nullptr, 10));
     }
   }
-  Soak soak(seed);
+  Soak soak(seed, small ? Small : Normal);
   return soak.Run(frames, keepGoing) ? EXIT_SUCCESS : EXIT_FAILURE;
 }
