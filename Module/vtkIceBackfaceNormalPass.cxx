@@ -40,11 +40,9 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
-  vtkIceScreenTarget::Drawing drawing(*this->Target, renderer, 4);
-  vtkOpenGLState* state = drawing.State;
-  state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  vtkIceScreenTarget::Drawing drawing(*this->Target, s, 4);
+  drawing.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  drawing.ClearDepth(1.0);
 
   this->PreRender(s);
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -72,6 +70,19 @@ bool vtkIceBackfaceNormalPass::PostReplaceShaderValues(std::string&, std::string
     vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Impl"));
   vtkShaderProgram::Substitute(fragmentShader, "//ICEHOOK::CrackOutput",
     vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Crack"));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceBackfaceNormalPass::SetShaderParameters(
+  vtkShaderProgram*, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  // Only back faces are wanted: culled in OpenGL rather than rasterised and discarded (the
+  // shader still discards front faces; none reach it). Cracks drawn here stay unculled.
+  if (vtkIceMapper::SafeDownCast(mapper))
+  {
+    this->Target->Cull(GL_FRONT);
+  }
   return true;
 }
 

@@ -1,6 +1,7 @@
 #include "vtkIceDepthIntervalPass.h"
 
 #include "vtkIceDepthIntervalFS.h"
+#include "vtkIceMapper.h"
 #include "vtkIceScreenTarget.h"
 #include "vtkIceShaderSections.h"
 
@@ -83,12 +84,11 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   }
 
   {
-    vtkIceScreenTarget::Drawing drawing(*this->Target, renderer, 2);
+    vtkIceScreenTarget::Drawing drawing(*this->Target, s, 2);
     vtkOpenGLState* state = drawing.State;
     // Empty interval where there is no ice: front beyond back.
-    state->vtkglClearColor(FLT_MAX, -FLT_MAX, 0.0, 0.0);
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    drawing.ClearColor(FLT_MAX, -FLT_MAX, 0.0f, 0.0f);
 
     this->PreRender(s);
     // Stage 0: nearest front face into R. Stage 1: farthest back face into G.
@@ -96,8 +96,7 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
     {
       const bool front = this->Stage == 0;
       state->vtkglColorMask(front, !front, GL_FALSE, GL_FALSE);
-      state->vtkglClearDepth(front ? 1.0 : 0.0);
-      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+      drawing.ClearDepth(front ? 1.0 : 0.0);
       state->vtkglDepthFunc(front ? GL_LESS : GL_GREATER);
       for (int i = 0; i < s->GetPropArrayCount(); ++i)
       {
@@ -107,7 +106,6 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
     }
     this->Stage = 0;
     this->PostRender(s);
-    state->vtkglClearDepth(1.0);
   }
   camera->SetClippingRange(clipping);
   vtkOpenGLCheckErrorMacro("failed after Render");
@@ -126,8 +124,14 @@ bool vtkIceDepthIntervalPass::PostReplaceShaderValues(std::string&, std::string&
 
 //------------------------------------------------------------------------------
 bool vtkIceDepthIntervalPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
+  // Stage 0 wants front faces, stage 1 back faces: the others are culled in OpenGL rather than
+  // rasterised and discarded (the shader still discards them; none reach it).
+  if (vtkIceMapper::SafeDownCast(mapper))
+  {
+    this->Target->Cull(this->Stage == 0 ? GL_BACK : GL_FRONT);
+  }
   if (program->IsUniformUsed("iceDepthStage"))
   {
     program->SetUniformi("iceDepthStage", this->Stage);

@@ -2,6 +2,7 @@
 
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -14,6 +15,7 @@ void vtkIceScreenTarget::Prepare(
 {
   if (!this->ColorTexture)
   {
+    this->Cleared.Reset();
     this->ColorTexture = vtkSmartPointer<vtkTextureObject>::New();
     this->ColorTexture->SetContext(window);
     this->ColorTexture->SetFormat(components == 2 ? GL_RG : GL_RGBA);
@@ -83,27 +85,45 @@ void vtkIceScreenTarget::ReleaseGraphicsResources(vtkWindow* window)
   this->DepthTexture = nullptr;
 }
 
+void vtkIceScreenTarget::Cull(unsigned int face)
+{
+  if (this->Active)
+  {
+    this->Active->State->vtkglCullFace(face);
+    this->Active->State->vtkglEnable(GL_CULL_FACE);
+  }
+}
+
 namespace
 {
 vtkOpenGLState* StateOf(vtkRenderer* renderer)
 {
   return static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
 }
+
+void Scissor(vtkOpenGLState* state, const int rect[4])
+{
+  state->vtkglScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+}
 }
 
 vtkIceScreenTarget::Drawing::Drawing(
-  vtkIceScreenTarget& target, vtkRenderer* renderer, int components)
-  : State(StateOf(renderer))
+  vtkIceScreenTarget& target, const vtkRenderState* s, int components)
+  : State(StateOf(s->GetRenderer()))
   , Target(target)
+  , CullMode(GL_BACK)
   , Viewport(this->State)
   , Scissor(this->State)
-  , ClearColor(this->State)
+  , ScissorTest(this->State, GL_SCISSOR_TEST)
+  , CullFace(this->State, GL_CULL_FACE)
+  , ClearColorSaver(this->State)
   , ColorMask(this->State)
   , DepthMask(this->State)
   , DepthFunc(this->State)
   , DepthTest(this->State, GL_DEPTH_TEST)
   , Blend(this->State, GL_BLEND)
 {
+  vtkRenderer* renderer = s->GetRenderer();
   int width;
   int height;
   int x;
@@ -115,9 +135,33 @@ vtkIceScreenTarget::Drawing::Drawing(
   this->State->vtkglEnable(GL_DEPTH_TEST);
   this->State->vtkglDisable(GL_BLEND);
   this->State->vtkglDepthMask(GL_TRUE);
+  vtkIceScreenRegion::Covered(s, width, height, this->Covered);
+  ::Scissor(this->State, this->Covered);
+  this->State->vtkglEnable(GL_SCISSOR_TEST);
+  this->State->vtkglGetIntegerv(GL_CULL_FACE_MODE, &this->CullMode);
+  target.Active = this;
 }
 
 vtkIceScreenTarget::Drawing::~Drawing()
 {
+  this->Target.Active = nullptr;
+  this->State->vtkglCullFace(static_cast<unsigned int>(this->CullMode));
   this->Target.Unbind(this->State);
+}
+
+void vtkIceScreenTarget::Drawing::ClearColor(float red, float green, float blue, float alpha)
+{
+  int rect[4];
+  this->Target.Cleared.ToClear(this->Covered, this->Target.Width, this->Target.Height, rect);
+  ::Scissor(this->State, rect);
+  this->State->vtkglClearColor(red, green, blue, alpha);
+  this->State->vtkglClear(GL_COLOR_BUFFER_BIT);
+  ::Scissor(this->State, this->Covered);
+}
+
+void vtkIceScreenTarget::Drawing::ClearDepth(double depth)
+{
+  this->State->vtkglClearDepth(depth);
+  this->State->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  this->State->vtkglClearDepth(1.0);
 }
