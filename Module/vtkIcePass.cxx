@@ -248,26 +248,30 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
   }
   state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
   state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
-  // Air first (blended back to front), then the cracks' highlights added on top.
+  // Air first (blended back to front), then the cracks' highlights added on top. Both show only
+  // inside the ice's projected bounding box (elsewhere the depth interval is empty, or the crack
+  // geometry is already cut to the ice): scissored there, the parts of the planes and sheets that
+  // stick out are never rasterised.
+  const auto scissorToIce = [&](vtkProp* prop, bool unclipped) {
+    int covered[4] = { 0, 0, size[0], size[1] };
+    if (!unclipped)
+    {
+      vtkIceScreenRegion::Covered(renderer, &prop, 1, size[0], size[1], covered);
+    }
+    state->vtkglScissor(origin[0] + covered[0], origin[1] + covered[1], covered[2] - covered[0],
+      covered[3] - covered[1]);
+  };
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];
+    scissorToIce(prop, false);
     vtkIceMapper::GetIceMapperOf(prop)->RenderAir(renderer, static_cast<vtkActor*>(prop));
   }
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];
     vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(prop);
-    // Clipped cracks show only inside the ice's projected bounding box (elsewhere the depth
-    // interval is empty, or the crack geometry is already cut to the ice): scissor them there,
-    // so the parts of the sheets that stick out are never rasterised.
-    int covered[4] = { 0, 0, size[0], size[1] };
-    if (mapper->GetDebugView() != vtkIceMapper::DebugCracksUnclipped)
-    {
-      vtkIceScreenRegion::Covered(renderer, &prop, 1, size[0], size[1], covered);
-    }
-    state->vtkglScissor(origin[0] + covered[0], origin[1] + covered[1], covered[2] - covered[0],
-      covered[3] - covered[1]);
+    scissorToIce(prop, mapper->GetDebugView() == vtkIceMapper::DebugCracksUnclipped);
     mapper->RenderCracks(renderer, static_cast<vtkActor*>(prop), true);
   }
 }
