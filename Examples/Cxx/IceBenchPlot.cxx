@@ -22,6 +22,7 @@
 #include "vtkVector.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -126,6 +127,7 @@ void Objects(
     table->AddColumn(Column(name, rows));
   }
   std::vector<double> positions;
+  double largest = 3.6; // room above the targets' lines even when every bar is below them
   for (vtkIdType r = 0; r < rows; ++r)
   {
     table->SetValue(r, 0, static_cast<double>(r + 1));
@@ -137,6 +139,7 @@ void Objects(
         if (c.Ice == materials[m])
         {
           table->SetValue(r, m + 1, c.Ratio);
+          largest = std::max(largest, c.Ratio * 1.05);
         }
       }
     }
@@ -164,7 +167,7 @@ void Objects(
   chart->GetAxis(vtkAxis::BOTTOM)->SetBehavior(vtkAxis::FIXED);
   chart->GetAxis(vtkAxis::BOTTOM)->SetRange(0.4, static_cast<double>(rows) + 0.6);
   chart->GetAxis(vtkAxis::LEFT)->SetBehavior(vtkAxis::FIXED);
-  chart->GetAxis(vtkAxis::LEFT)->SetRange(0.0, 3.6);
+  chart->GetAxis(vtkAxis::LEFT)->SetRange(0.0, largest);
   chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
   keep.push_back(table.Get());
   keep.push_back(targets.Get());
