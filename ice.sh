@@ -2,7 +2,7 @@
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         install what is missing, build, run every test
-#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~5 min)
+#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~15 min)
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
 #   ./ice.sh valgrind [frames]            build, then valgrind memcheck on one full-ice run

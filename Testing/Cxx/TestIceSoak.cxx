@@ -1,9 +1,9 @@
-// Soak: the full ice (two-sided refraction, a cube map of the scene rendered every frame, cracks)
-// for many frames while the application does what long-running applications do. Every 100
-// frames (one cycle) the window is resized to a random size, ice actors are added and removed
-// (one of them sharing another's mapper), one is hidden and shown, crack clipping is switched,
-// and the pass is removed from the renderer and set again (every other cycle a new pass, the
-// old one deleted). After every frame: no OpenGL error (glGetError) and no VTK error or
+// Soak: the full ice (two-sided refraction, a cube map of the scene rendered every frame, cracks,
+// air, bumps) for many frames while the application does what long-running applications do.
+// Every 100 frames (one cycle) the window is resized to a random size, ice actors are added and
+// removed (one of them sharing another's mapper), one is hidden and shown, crack clipping is
+// switched, and the pass is removed from the renderer and set again (every other cycle a new
+// pass, the old one deleted). After every frame: no OpenGL error (glGetError) and no VTK error or
 // warning. At the end of each cycle (same ice actors, same window size): the OpenGL objects of
 // the context are counted (IceTest::TakeGLCensus) and the process's memory read (VmRSS, heap).
 // After the first cycle (warm-up) the number of OpenGL objects of each kind must not grow and
@@ -62,8 +62,8 @@ void ConfigureFullIce(vtkIceMapper* mapper, int seed)
   mapper->SetBumpStrength(0.1);
 }
 
-// The full ice pass: two-sided refraction, depth interval and cracks, and a dynamic cube map of
-// the scene rendered for every ice prop every frame.
+// The full ice pass: two-sided refraction, the depth interval (cracks, air) and a dynamic cube
+// map of the scene rendered for every ice prop every frame.
 vtkSmartPointer<vtkIcePass> MakeFullIcePass(int faceSize)
 {
   auto pass = vtkSmartPointer<vtkIcePass>::New();

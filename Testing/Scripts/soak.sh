@@ -3,7 +3,7 @@
 # failure. Needs a build (./ice.sh test builds one). Runs on the display, or under Xvfb when there
 # is none; VTKICE_BACKEND=egl (or osmesa) renders without X instead.
 #   Testing/Scripts/soak.sh [FRAMES] [SEED]         (./ice.sh soak [FRAMES] [SEED])
-# About 5 minutes for 10 000 frames on 2 cores with llvmpipe. Exit status 0 when no OpenGL error,
+# About 15 minutes for 10 000 frames on 2 cores with llvmpipe. Exit status 0 when no OpenGL error,
 # no VTK message, no growth of OpenGL objects and flat memory (TestIceSoak.cxx).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
