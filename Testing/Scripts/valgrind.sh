@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # valgrind memcheck on one full-ice run: one cycle of the soak (TestIceSoak --frames 100
-# --small: two-sided refraction, a cube map of the scene every frame, cracks, ice actors added
-# and removed, a shared mapper, the pass removed and set again, resizes) in a small window.
-# About 5 minutes on 2 cores with llvmpipe.
+# --small: two-sided refraction, a cube map of the scene every frame, cracks, air, bumps, ice
+# actors added and removed, a shared mapper, the pass removed and set again, resizes) in a small
+# window. About 15 minutes on 2 cores with llvmpipe.
 #   Testing/Scripts/valgrind.sh [FRAMES]        (./ice.sh valgrind [FRAMES])
 # Needs a build (build/, or $VTKICE_BUILD_DIR). Writes the memcheck log to
 # <build>/Testing/Temporary/valgrind/memcheck.log and prints a summary; exit status 1 when a
