@@ -75,16 +75,12 @@ void vtkIceAirMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 void vtkIceAirMapper::ReplaceIceShaderValues(
   std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
 {
-  using vtkIceShaderSections::AfterTag;
+  using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
-  vtkShaderProgram::Substitute(
-    vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceAirVS, "Dec")));
-  vtkShaderProgram::Substitute(
-    vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceAirVS, "Impl")));
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceAirFS, "Dec")));
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceAirFS, "Impl")));
+  InsertAfterTag(vs, "//VTK::Normal::Dec", Get(vtkIceAirVS, "Dec"));
+  InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceAirVS, "Impl"));
+  InsertAfterTag(fs, "//VTK::Normal::Dec", Get(vtkIceAirFS, "Dec"));
+  InsertAfterTag(fs, "//VTK::Light::Impl", Get(vtkIceAirFS, "Impl"));
 }
 
 //------------------------------------------------------------------------------

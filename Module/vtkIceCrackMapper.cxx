@@ -35,23 +35,19 @@ vtkTextureObject* vtkIceCrackMapper::GetDepthIntervalTexture()
 void vtkIceCrackMapper::ReplaceIceShaderValues(
   std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
 {
-  using vtkIceShaderSections::AfterTag;
+  using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
-  vtkShaderProgram::Substitute(
-    vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceCrackVS, "Dec")));
-  vtkShaderProgram::Substitute(
-    vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceCrackVS, "Impl")));
-  vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec",
-    AfterTag("//VTK::Normal::Dec", Get(vtkIceValueNoise, "Dec") + Get(vtkIceCrackFS, "Dec")));
+  InsertAfterTag(vs, "//VTK::Normal::Dec", Get(vtkIceCrackVS, "Dec"));
+  InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceCrackVS, "Impl"));
+  InsertAfterTag(fs, "//VTK::Normal::Dec",
+    Get(vtkIceValueNoise, "Dec") + Get(vtkIceCrackFS, "Dec"));
   // The bump mapping tilts VTK's lighting normal, which the shader has only when the actor is lit:
   // before a renderer's first frame has created its automatic light, cracks drawn into the
   // back-face pass are not (and show no highlight anyway).
   const bool lit = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity > 0;
-  vtkShaderProgram::Substitute(fs, "//VTK::Normal::Impl",
-    AfterTag("//VTK::Normal::Impl",
-      Get(vtkIceCrackFS, "Interval") + (lit ? Get(vtkIceCrackFS, "Normal") : std::string())));
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceCrackFS, "Impl")));
+  InsertAfterTag(fs, "//VTK::Normal::Impl",
+    Get(vtkIceCrackFS, "Interval") + (lit ? Get(vtkIceCrackFS, "Normal") : std::string()));
+  InsertAfterTag(fs, "//VTK::Light::Impl", Get(vtkIceCrackFS, "Impl"));
 }
 
 //------------------------------------------------------------------------------

@@ -748,16 +748,14 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 void vtkIceMapper::ReplaceIceShaderValues(
   std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
 {
-  using vtkIceShaderSections::AfterTag;
+  using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
   const std::string optics = vtkIceOptics;
   const int variant = this->ShaderVariant();
   this->ShaderVariantBuilt[this->LastBoundBO] = variant;
 
-  vtkShaderProgram::Substitute(
-    vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", optics + Get(vtkIceSurfaceVS, "Dec")));
-  vtkShaderProgram::Substitute(
-    vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceSurfaceVS, "Impl")));
+  InsertAfterTag(vs, "//VTK::Normal::Dec", optics + Get(vtkIceSurfaceVS, "Dec"));
+  InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceSurfaceVS, "Impl"));
 
   std::string declarations = optics + Get(vtkIceSurfaceFS, "Dec");
   if (variant & TwoSidedPart)
@@ -780,9 +778,8 @@ void vtkIceMapper::ReplaceIceShaderValues(
   {
     declarations += vtkIceGlistening::Declarations();
   }
-  vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", declarations));
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceSurfaceFS, "Impl")));
+  InsertAfterTag(fs, "//VTK::Normal::Dec", declarations);
+  InsertAfterTag(fs, "//VTK::Light::Impl", Get(vtkIceSurfaceFS, "Impl"));
   if (variant & TwoSidedPart)
   {
     vtkShaderProgram::Substitute(fs, "//ICEHOOK::RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));

@@ -3,6 +3,8 @@
 #ifndef vtkIceShaderSections_h
 #define vtkIceShaderSections_h
 
+#include "vtkShaderProgram.h" // for Substitute
+
 #include <string>
 
 namespace vtkIceShaderSections
@@ -31,10 +33,11 @@ inline void InsertDeclarations(std::string& source, const std::string& declarati
   }
 }
 
-// Appends `code` after VTK's `tag`, keeping the tag so VTK still expands it before our code.
-inline std::string AfterTag(const std::string& tag, const std::string& code)
+// Inserts `code` right after VTK's `tag` in `source`, keeping the tag so VTK still expands it
+// before our code.
+inline void InsertAfterTag(std::string& source, const std::string& tag, const std::string& code)
 {
-  return tag + "\n" + code;
+  vtkShaderProgram::Substitute(source, tag, tag + "\n" + code);
 }
 }
 

@@ -166,19 +166,16 @@ void vtkIceWorldSpaceMapper::ReplaceShaderValues(
 {
   if (this->IsSurfaceHelper(this->LastBoundBO))
   {
-    using vtkIceShaderSections::AfterTag;
+    using vtkIceShaderSections::InsertAfterTag;
     using vtkIceShaderSections::Get;
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
     // Code inserted right after a tag lands before code inserted there earlier: the subclass goes
     // first so that the world-space declarations and code end up before its own.
     this->ReplaceIceShaderValues(vs, fs, ren, act);
-    vtkShaderProgram::Substitute(
-      vs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceWorldSpaceVS, "Dec")));
-    vtkShaderProgram::Substitute(
-      vs, "//VTK::Light::Impl", AfterTag("//VTK::Light::Impl", Get(vtkIceWorldSpaceVS, "Impl")));
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::Normal::Dec", AfterTag("//VTK::Normal::Dec", Get(vtkIceWorldSpaceFS, "Dec")));
+    InsertAfterTag(vs, "//VTK::Normal::Dec", Get(vtkIceWorldSpaceVS, "Dec"));
+    InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceWorldSpaceVS, "Impl"));
+    InsertAfterTag(fs, "//VTK::Normal::Dec", Get(vtkIceWorldSpaceFS, "Dec"));
     shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
   }
