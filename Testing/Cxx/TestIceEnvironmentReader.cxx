@@ -283,12 +283,13 @@ bool ReadAs(vtkIceEnvironmentReader* reader, const std::string& path, int layout
       (recorder->Errors.empty() ? std::string() : ", error: " + recorder->Errors[0]));
 }
 
-// Every texel of every face against the 8-bit DirectionTest colour at its direction, within 1.
-bool CheckExact(vtkIceEnvironmentReader* reader, const std::string& name)
+// Calls `visit(rgb, scalars, t)` for every texel t of every face the reader produced, with the
+// DirectionTest colour `rgb` at the texel's direction.
+template <typename Visit>
+void ForEachTexel(vtkIceEnvironmentReader* reader, Visit visit)
 {
   vtkNew<vtkIceCubeMapSource> pattern;
   pattern->SetPatternToDirectionTest();
-  int worst = 0;
   for (int face = 0; face < 6; ++face)
   {
     vtkImageData* image = Output(reader, face);
@@ -301,15 +302,24 @@ bool CheckExact(vtkIceEnvironmentReader* reader, const std::string& name)
         double dir[3], rgb[3];
         vtkIceCubeMapSource::TexelDirection(face, i, j, size, dir);
         pattern->Evaluate(dir, rgb);
-        for (int c = 0; c < 3; ++c)
-        {
-          const double expected = std::lround(255.0 * std::min(1.0, std::max(0.0, rgb[c])));
-          const double read = scalars->GetComponent(static_cast<vtkIdType>(j) * size + i, c);
-          worst = std::max(worst, static_cast<int>(std::abs(read - expected)));
-        }
+        visit(rgb, scalars, static_cast<vtkIdType>(j) * size + i);
       }
     }
   }
+}
+
+// Every texel of every face against the 8-bit DirectionTest colour at its direction, within 1.
+bool CheckExact(vtkIceEnvironmentReader* reader, const std::string& name)
+{
+  int worst = 0;
+  ForEachTexel(reader, [&worst](const double rgb[3], vtkDataArray* scalars, vtkIdType t) {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double expected = std::lround(255.0 * std::min(1.0, std::max(0.0, rgb[c])));
+      const double read = scalars->GetComponent(t, c);
+      worst = std::max(worst, static_cast<int>(std::abs(read - expected)));
+    }
+  });
   return Report(worst <= 1, name + ": every texel within " + std::to_string(worst) +
       "/255 of the pattern at its direction");
 }
@@ -326,38 +336,22 @@ struct PanoramaError
 
 PanoramaError MeasurePanorama(vtkIceEnvironmentReader* reader, double scale, bool grey)
 {
-  vtkNew<vtkIceCubeMapSource> pattern;
-  pattern->SetPatternToDirectionTest();
   PanoramaError error;
   double sum = 0.0;
   size_t count = 0;
-  for (int face = 0; face < 6; ++face)
-  {
-    vtkImageData* image = Output(reader, face);
-    const int size = image->GetDimensions()[0];
-    vtkDataArray* scalars = image->GetPointData()->GetScalars();
-    for (int j = 0; j < size; ++j)
+  ForEachTexel(reader, [&](const double rgb[3], vtkDataArray* scalars, vtkIdType t) {
+    for (int c = 0; c < 3; ++c)
     {
-      for (int i = 0; i < size; ++i)
-      {
-        double dir[3], rgb[3];
-        vtkIceCubeMapSource::TexelDirection(face, i, j, size, dir);
-        pattern->Evaluate(dir, rgb);
-        const vtkIdType t = static_cast<vtkIdType>(j) * size + i;
-        for (int c = 0; c < 3; ++c)
-        {
-          const double read = scalars->GetComponent(t, c);
-          const double expected = scale * rgb[grey ? 0 : c];
-          const double e = std::abs(read - expected);
-          sum += e;
-          ++count;
-          error.Max = std::max(error.Max, e);
-          error.Largest = std::max(error.Largest, read);
-          error.Grey = error.Grey && read == scalars->GetComponent(t, 0);
-        }
-      }
+      const double read = scalars->GetComponent(t, c);
+      const double expected = scale * rgb[grey ? 0 : c];
+      const double e = std::abs(read - expected);
+      sum += e;
+      ++count;
+      error.Max = std::max(error.Max, e);
+      error.Largest = std::max(error.Largest, read);
+      error.Grey = error.Grey && read == scalars->GetComponent(t, 0);
     }
-  }
+  });
   error.Mean = sum / count;
   return error;
 }

@@ -247,6 +247,20 @@ bool TwoWindows()
   return ok;
 }
 
+// A small ice teapot (not added to `renderer`), with the sky as `renderer`'s environment.
+vtkSmartPointer<vtkActor> SmallIceTeapot(vtkRenderer* renderer)
+{
+  vtkSmartPointer<vtkTexture> environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 64);
+  renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkIceTeapotSource> teapot;
+  teapot->SetResolution(8);
+  vtkNew<vtkIceMapper> mapper;
+  mapper->SetInputConnection(teapot->GetOutputPort());
+  auto ice = vtkSmartPointer<vtkActor>::New();
+  ice->SetMapper(mapper);
+  return ice;
+}
+
 // Pixels where the ice covers the picture: those that do not change with the background.
 std::vector<bool> IceMask(int width, int height)
 {
@@ -255,15 +269,7 @@ std::vector<bool> IceMask(int width, int height)
   {
     vtkNew<vtkRenderer> renderer;
     renderer->SetBackground(i, i, i);
-    vtkSmartPointer<vtkTexture> environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 64);
-    renderer->SetEnvironmentTexture(environment);
-    vtkNew<vtkIceTeapotSource> teapot;
-    teapot->SetResolution(8);
-    vtkNew<vtkIceMapper> mapper;
-    mapper->SetInputConnection(teapot->GetOutputPort());
-    vtkNew<vtkActor> ice;
-    ice->SetMapper(mapper);
-    renderer->AddActor(ice);
+    renderer->AddActor(SmallIceTeapot(renderer));
     vtkNew<vtkIcePass> pass;
     renderer->SetPass(pass);
     renderer->GetActiveCamera()->SetPosition(0.0, 1.0, 5.0);
@@ -312,14 +318,7 @@ bool Layers()
     window->AddRenderer(back);
     vtkNew<vtkRenderer> front;
     front->SetLayer(1);
-    vtkSmartPointer<vtkTexture> environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 64);
-    front->SetEnvironmentTexture(environment);
-    vtkNew<vtkIceTeapotSource> teapot;
-    teapot->SetResolution(8);
-    vtkNew<vtkIceMapper> mapper;
-    mapper->SetInputConnection(teapot->GetOutputPort());
-    vtkNew<vtkActor> iceActor;
-    iceActor->SetMapper(mapper);
+    vtkSmartPointer<vtkActor> iceActor = SmallIceTeapot(front);
     if (ice)
     {
       front->AddActor(iceActor);
