@@ -634,6 +634,13 @@ vtkTextureObject* vtkIceMapper::GetDepthIntervalTexture()
 }
 
 //------------------------------------------------------------------------------
+void vtkIceMapper::SetDepthRange(double nearest, double farthest)
+{
+  this->DepthRange[0] = nearest;
+  this->DepthRange[1] = farthest;
+}
+
+//------------------------------------------------------------------------------
 int vtkIceMapper::ShaderVariant() const
 {
   int variant = 0;

@@ -321,13 +321,16 @@ public:
    * The current frame's viewport-sized textures, set by vtkIcePass before rendering the scene and
    * cleared afterwards: back-face normals (RGB world normal, alpha coverage) and the depth
    * interval (R front, G back view depth). DepthRange is the view-depth range shown by the depth
-   * debug views.
+   * debug views. Like the textures, these are per-frame shader inputs: setting them does not
+   * modify the mapper (a new MTime would rebuild its buffers and shaders every frame the camera
+   * moves).
    */
   void SetBackfaceNormalTexture(vtkTextureObject* texture);
   vtkTextureObject* GetBackfaceNormalTexture();
   void SetDepthIntervalTexture(vtkTextureObject* texture);
   vtkTextureObject* GetDepthIntervalTexture();
-  vtkSetVector2Macro(DepthRange, double);
+  void SetDepthRange(double nearest, double farthest);
+  void SetDepthRange(const double range[2]) { this->SetDepthRange(range[0], range[1]); }
   vtkGetVector2Macro(DepthRange, double);
   ///@}
 
