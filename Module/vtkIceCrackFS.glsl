@@ -1,5 +1,4 @@
 //ICE::Dec
-in vec3 iceCrackMC;
 uniform sampler2D iceDepthInterval; // front (R) and back (G) view depth of the ice
 uniform int iceCrackClip;           // 1: discard outside the ice's depth interval
 uniform int iceCrackDebug;          // 1: solid red, as in the paper's Figure 5
@@ -16,8 +15,9 @@ uniform float iceBumpFrequency;
   }
 //ICE::Normal
   {
-    // Bump mapping: tilt the normal by the gradient of a noise field fixed to the crack.
-    vec3 gradientVC = normalMatrix * iceNoiseGradient(iceCrackMC * iceBumpFrequency);
+    // Bump mapping: tilt the normal by the gradient of a noise field fixed to the crack (in true
+    // model coordinates, VTK's shift/scale of the vertex buffer undone).
+    vec3 gradientVC = normalMatrix * iceNoiseGradient(icePositionMC * iceBumpFrequency);
     normalVCVSOutput = iceBumpNormal(normalVCVSOutput, gradientVC, iceBumpStrength);
   }
 //ICE::Impl

@@ -1,7 +1,6 @@
 #include "vtkIceCrackMapper.h"
 
 #include "vtkIceCrackFS.h"
-#include "vtkIceCrackVS.h"
 #include "vtkIceValueNoise.h"
 #include "vtkIceShaderSections.h"
 
@@ -33,12 +32,10 @@ vtkTextureObject* vtkIceCrackMapper::GetDepthIntervalTexture()
 
 //------------------------------------------------------------------------------
 void vtkIceCrackMapper::ReplaceIceShaderValues(
-  std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
+  std::string&, std::string& fs, vtkRenderer*, vtkActor*)
 {
   using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
-  InsertAfterTag(vs, "//VTK::Normal::Dec", Get(vtkIceCrackVS, "Dec"));
-  InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceCrackVS, "Impl"));
   InsertAfterTag(fs, "//VTK::Normal::Dec",
     Get(vtkIceValueNoise, "Dec") + Get(vtkIceCrackFS, "Dec"));
   // The bump mapping tilts VTK's lighting normal, which the shader has only when the actor is lit:

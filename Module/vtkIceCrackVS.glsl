@@ -1,4 +1,0 @@
-//ICE::Dec
-out vec3 iceCrackMC;
-//ICE::Impl
-  iceCrackMC = vertexMC.xyz;
