@@ -37,6 +37,7 @@ void vtkIceScreenTarget::Prepare(
   {
     this->FrameBuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     this->FrameBuffer->SetContext(window);
+    this->Attached = false;
   }
   this->ColorTexture->Resize(width, height);
   this->DepthTexture->Resize(width, height);
@@ -48,17 +49,20 @@ void vtkIceScreenTarget::Bind(vtkOpenGLState* state)
 {
   state->PushFramebufferBindings();
   this->FrameBuffer->Bind();
-  this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
-  this->FrameBuffer->ActivateDrawBuffers(1);
-  this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
+  if (!this->Attached)
+  {
+    // Once per framebuffer: the attachments stay (a resize keeps the textures' names).
+    this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
+    this->FrameBuffer->ActivateDrawBuffers(1);
+    this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
+    this->Attached = true;
+  }
   state->vtkglViewport(0, 0, this->Width, this->Height);
   state->vtkglScissor(0, 0, this->Width, this->Height);
 }
 
 void vtkIceScreenTarget::Unbind(vtkOpenGLState* state)
 {
-  this->FrameBuffer->RemoveColorAttachments(1);
-  this->FrameBuffer->RemoveDepthAttachment();
   state->PopFramebufferBindings();
 }
 

@@ -81,6 +81,7 @@ private:
   vtkSmartPointer<vtkTextureObject> DepthTexture;
   int Width = 0;
   int Height = 0;
+  bool Attached = false; // the textures are attached to FrameBuffer
   vtkIceScreenRegion::Tracker Cleared; // what of ColorTexture may not hold the clear colour
   Drawing* Active = nullptr;
 
