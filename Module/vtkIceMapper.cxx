@@ -477,107 +477,29 @@ double vtkIceMapper::InputExtent()
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetRefractionRatio(double eta)
-{
-  if (SetClamped(this, "RefractionRatio", eta, this->GetRefractionRatioMinValue(),
-        this->GetRefractionRatioMaxValue(), this->RefractionRatio))
-  {
-    this->Modified();
+// The clamped floating-point properties: clamped to the ranges their header declares, NaN
+// refused with a warning (SetClamped).
+#define vtkIceClampedSetter(name)                                                                 \
+  void vtkIceMapper::Set##name(double value)                                                      \
+  {                                                                                               \
+    if (SetClamped(this, #name, value, this->Get##name##MinValue(), this->Get##name##MaxValue(), \
+          this->name))                                                                            \
+    {                                                                                             \
+      this->Modified();                                                                           \
+    }                                                                                             \
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetFresnelPower(double power)
-{
-  if (SetClamped(this, "FresnelPower", power, this->GetFresnelPowerMinValue(),
-        this->GetFresnelPowerMaxValue(), this->FresnelPower))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetBackNormalWeight(double weight)
-{
-  if (SetClamped(this, "BackNormalWeight", weight, this->GetBackNormalWeightMinValue(),
-        this->GetBackNormalWeightMaxValue(), this->BackNormalWeight))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetCrackIntensity(double intensity)
-{
-  if (SetClamped(this, "CrackIntensity", intensity, this->GetCrackIntensityMinValue(),
-        this->GetCrackIntensityMaxValue(), this->CrackIntensity))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetMilkiness(double milkiness)
-{
-  if (SetClamped(this, "Milkiness", milkiness, this->GetMilkinessMinValue(), this->GetMilkinessMaxValue(), this->Milkiness))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetBumpStrength(double bumpStrength)
-{
-  if (SetClamped(this, "BumpStrength", bumpStrength, this->GetBumpStrengthMinValue(), this->GetBumpStrengthMaxValue(), this->BumpStrength))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetBumpScale(double bumpScale)
-{
-  if (SetClamped(this, "BumpScale", bumpScale, this->GetBumpScaleMinValue(), this->GetBumpScaleMaxValue(), this->BumpScale))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetGlisteningScale(double glisteningScale)
-{
-  if (SetClamped(this, "GlisteningScale", glisteningScale, this->GetGlisteningScaleMinValue(), this->GetGlisteningScaleMaxValue(), this->GlisteningScale))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetGlisteningIntensity(double glisteningIntensity)
-{
-  if (SetClamped(this, "GlisteningIntensity", glisteningIntensity, this->GetGlisteningIntensityMinValue(), this->GetGlisteningIntensityMaxValue(), this->GlisteningIntensity))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetGlisteningAlignmentGain(double glisteningAlignmentGain)
-{
-  if (SetClamped(this, "GlisteningAlignmentGain", glisteningAlignmentGain, this->GetGlisteningAlignmentGainMinValue(), this->GetGlisteningAlignmentGainMaxValue(), this->GlisteningAlignmentGain))
-  {
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetSnowAmount(double snowAmount)
-{
-  if (SetClamped(this, "SnowAmount", snowAmount, this->GetSnowAmountMinValue(), this->GetSnowAmountMaxValue(), this->SnowAmount))
-  {
-    this->Modified();
-  }
-}
+vtkIceClampedSetter(RefractionRatio)
+vtkIceClampedSetter(FresnelPower)
+vtkIceClampedSetter(BackNormalWeight)
+vtkIceClampedSetter(CrackIntensity)
+vtkIceClampedSetter(Milkiness)
+vtkIceClampedSetter(BumpStrength)
+vtkIceClampedSetter(BumpScale)
+vtkIceClampedSetter(GlisteningScale)
+vtkIceClampedSetter(GlisteningIntensity)
+vtkIceClampedSetter(GlisteningAlignmentGain)
+vtkIceClampedSetter(SnowAmount)
+#undef vtkIceClampedSetter
 
 //------------------------------------------------------------------------------
 void vtkIceMapper::SetIceColor(double red, double green, double blue)
