@@ -31,7 +31,7 @@ struct Configuration
   std::string Label;
   Material Ice = Material::Plain;
   int Cracks = 0;
-  int AirPlanes = 0; // as configured on the mapper (0 while vtkIceMapper has no air planes)
+  int AirPlanes = 0; // vtkIceMapper::NumberOfAirPlanes
   bool CubeMap = false;
   int UpdateMode = 0; // vtkIceCubeMapPass::UpdateModes
   int FaceSize = 512;
