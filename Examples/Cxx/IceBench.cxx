@@ -18,7 +18,6 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSkybox.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkTexture.h"
@@ -311,21 +310,6 @@ vtkSmartPointer<vtkPolyData> MakeObject(const std::string& object, std::string& 
   return output;
 }
 
-const double ViewDirection[3] = { 2.1, 0.9, 3.9 }; // as in ice-render, from the object's centre
-
-void PlaceCamera(vtkRenderer* renderer, double distance)
-{
-  const double length = std::sqrt(ViewDirection[0] * ViewDirection[0] +
-    ViewDirection[1] * ViewDirection[1] + ViewDirection[2] * ViewDirection[2]);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(distance * ViewDirection[0] / length, distance * ViewDirection[1] / length,
-    distance * ViewDirection[2] / length);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(32.0);
-  renderer->ResetCameraClippingRange();
-}
-
 // One configuration's renderer and what the frame loop needs of it.
 struct Scene
 {
@@ -339,10 +323,7 @@ Scene BuildScene(const Group& g, Configuration& c, vtkPolyData* object, vtkTextu
   Scene scene;
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
   vtkRenderer* renderer = scene.Renderer;
-  renderer->SetEnvironmentTexture(environment);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(environment);
-  renderer->AddActor(skybox);
+  IceScene::AddEnvironment(renderer, environment);
   if (g.Landscape)
   {
     const double ground = object->GetBounds()[2];
@@ -416,7 +397,7 @@ void MoveBall(vtkActor* ball)
 
 double Coverage(vtkRenderWindow* window, vtkRenderer* renderer, double distance)
 {
-  PlaceCamera(renderer, distance);
+  IceScene::PlaceCamera(renderer, distance);
   window->Render();
   vtkNew<vtkUnsignedCharArray> pixels;
   window->GetPixelData(0, 0, Width - 1, Height - 1, 0, pixels);
@@ -1010,7 +991,7 @@ int main(int argc, char* argv[])
     for (Configuration& c : g.Configurations)
     {
       Scene scene = BuildScene(g, c, object, environment);
-      PlaceCamera(scene.Renderer, g.CameraDistance);
+      IceScene::PlaceCamera(scene.Renderer, g.CameraDistance);
       scene.Renderer->SetDraw(0);
       window->AddRenderer(scene.Renderer);
       scenes.push_back(scene);

@@ -11,6 +11,7 @@
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkMath.h"
 #include "vtkImageData.h"
 #include "vtkConeSource.h"
 #include "vtkCylinderSource.h"
@@ -330,6 +331,35 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
   return texture;
 }
 
+void AddEnvironment(vtkRenderer* renderer, vtkTexture* environment)
+{
+  renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(environment);
+  renderer->AddActor(skybox);
+}
+
+namespace
+{
+const double ViewDirection[3] = { 2.1, 0.9, 3.9 };
+}
+
+double DefaultCameraDistance()
+{
+  return vtkMath::Norm(ViewDirection);
+}
+
+void PlaceCamera(vtkRenderer* renderer, double distance)
+{
+  const double scale = distance / DefaultCameraDistance(); // exactly 1 at the default distance
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(scale * ViewDirection[0], scale * ViewDirection[1], scale * ViewDirection[2]);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(32.0);
+  renderer->ResetCameraClippingRange();
+}
+
 vtkActor* Populate(
   vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment, const Options& options)
 {
@@ -344,23 +374,14 @@ vtkActor* Populate(
   {
     AddLandscape(renderer, model->GetBounds()[2]);
   }
-  renderer->SetEnvironmentTexture(environment);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(environment);
-  renderer->AddActor(skybox);
+  AddEnvironment(renderer, environment);
 
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputData(model);
   vtkNew<vtkActor> ice;
   ice->SetMapper(mapper);
   renderer->AddActor(ice);
-
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(2.1, 0.9, 3.9);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(32.0);
-  renderer->ResetCameraClippingRange();
+  PlaceCamera(renderer, DefaultCameraDistance());
   return ice;
 }
 }

@@ -28,6 +28,14 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
 // six pine trees within 8 units of the origin, the sky's sun and a soft headlight.
 void AddLandscape(vtkRenderer* renderer, double groundHeight);
 
+// Sets `environment` as the renderer's environment texture and draws it as the skybox.
+void AddEnvironment(vtkRenderer* renderer, vtkTexture* environment);
+
+// Points the camera at the origin from `distance` along the default scene's view direction
+// (2.1, 0.9, 3.9), 32° view angle; the default scene's distance is that vector's length.
+void PlaceCamera(vtkRenderer* renderer, double distance);
+double DefaultCameraDistance();
+
 struct Options
 {
   // A ground with rocks and trees around the ice, lit by the sky's sun.
