@@ -1,19 +1,158 @@
 #include "vtkIceSurfaceCheck.h"
 
 #include "vtkCellArray.h"
-#include "vtkStaticCleanPolyData.h"
+#include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStaticCleanPolyData.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <utility>
 #include <vector>
 
+namespace
+{
+bool HasOnlyFinitePoints(vtkPoints* points)
+{
+  vtkDataArray* data = points->GetData();
+  const vtkIdType n = data->GetNumberOfTuples();
+  const int components = data->GetNumberOfComponents();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < components; ++k)
+    {
+      if (!std::isfinite(data->GetComponent(i, k)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Checks one cell array of `input` ("polygon", "strip", ...): offsets that start at 0, never
+// decrease and end at the connectivity's size, cells of at least `minimum` points, point ids
+// within [0, points). Returns "" or the first problem.
+std::string FindCellProblem(
+  vtkCellArray* cells, const char* kind, vtkIdType minimum, vtkIdType points)
+{
+  if (!cells || cells->GetNumberOfCells() == 0)
+  {
+    return std::string();
+  }
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  const vtkIdType numberOfCells = offsets->GetNumberOfValues() - 1;
+  const vtkIdType size = connectivity->GetNumberOfValues();
+  std::ostringstream problem;
+  vtkIdType previous = static_cast<vtkIdType>(offsets->GetComponent(0, 0));
+  if (previous != 0)
+  {
+    problem << "its " << kind << " offsets do not start at 0";
+    return problem.str();
+  }
+  for (vtkIdType cell = 0; cell < numberOfCells; ++cell)
+  {
+    const vtkIdType next = static_cast<vtkIdType>(offsets->GetComponent(cell + 1, 0));
+    if (next < previous || next > size)
+    {
+      problem << "its " << kind << " offsets are inconsistent at " << kind << " " << cell;
+      return problem.str();
+    }
+    if (next - previous < minimum)
+    {
+      problem << kind << " " << cell << " has " << next - previous << " point"
+              << (next - previous == 1 ? "" : "s") << " (at least " << minimum << " needed)";
+      return problem.str();
+    }
+    for (vtkIdType i = previous; i < next; ++i)
+    {
+      const double id = connectivity->GetComponent(i, 0);
+      if (id < 0 || id >= points)
+      {
+        problem << kind << " " << cell << " uses point " << static_cast<long long>(id)
+                << ", which does not exist (" << points << " points)";
+        return problem.str();
+      }
+    }
+    previous = next;
+  }
+  if (previous != size)
+  {
+    problem << "its " << kind << " offsets end before the connectivity does";
+    return problem.str();
+  }
+  return std::string();
+}
+}
+
 namespace vtkIceSurfaceCheck
 {
+std::string FindInputProblem(vtkPolyData* input)
+{
+  if (!input)
+  {
+    return "No input.";
+  }
+  std::ostringstream problem;
+  const vtkIdType points = input->GetNumberOfPoints();
+  const vtkIdType surfaces = input->GetNumberOfPolys() + input->GetNumberOfStrips();
+  if (points == 0 || surfaces == 0)
+  {
+    problem << "Input has no polygons to render as ice (" << points << " points, "
+            << input->GetNumberOfLines() << " lines, " << input->GetNumberOfVerts()
+            << " vertices); it is not drawn.";
+    return problem.str();
+  }
+  if (!HasOnlyFinitePoints(input->GetPoints()))
+  {
+    return "Input has NaN or infinite point coordinates; it is not drawn as ice.";
+  }
+  struct
+  {
+    vtkCellArray* Cells;
+    const char* Kind;
+    vtkIdType Minimum;
+  } const kinds[] = { { input->GetPolys(), "polygon", 3 }, { input->GetStrips(), "strip", 3 },
+    { input->GetLines(), "line", 2 }, { input->GetVerts(), "vertex cell", 1 } };
+  for (const auto& kind : kinds)
+  {
+    const std::string cellProblem = FindCellProblem(kind.Cells, kind.Kind, kind.Minimum, points);
+    if (!cellProblem.empty())
+    {
+      return "Input is broken: " + cellProblem + "; it is not drawn as ice.";
+    }
+  }
+  vtkPointData* pointData = input->GetPointData();
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pointData->GetArray(a);
+    if (array && array->GetNumberOfTuples() < points)
+    {
+      problem << "Input is broken: its point array '"
+              << (array->GetName() ? array->GetName() : "(unnamed)") << "' has "
+              << array->GetNumberOfTuples() << " values for " << points
+              << " points; it is not drawn as ice.";
+      return problem.str();
+    }
+  }
+  double bounds[6];
+  input->GetPoints()->GetBounds(bounds);
+  if (bounds[0] == bounds[1] && bounds[2] == bounds[3] && bounds[4] == bounds[5])
+  {
+    problem << "Input has no extent: all its " << points << " points are at (" << bounds[0]
+            << ", " << bounds[2] << ", " << bounds[4] << "); it is not drawn.";
+    return problem.str();
+  }
+  return std::string();
+}
+
 void Extents(vtkPoints* points, double& thickness, double& size)
 {
   thickness = 0.0;

@@ -5,11 +5,20 @@
 
 #include "vtkType.h"
 
+#include <string> // for FindInputProblem
+
 class vtkPoints;
 class vtkPolyData;
 
 namespace vtkIceSurfaceCheck
 {
+// Why `input` cannot be drawn as ice, in one sentence, or "" when it can: no polygons, NaN or
+// infinite coordinates, a cell naming a point that does not exist, a polygon or strip of fewer
+// than three points, all points in one place, or point arrays shorter than the points. Linear in
+// the size of the input; VTK's filters (normals, bounds, cell links) read out of bounds on the
+// broken cases, so this runs before any of them.
+std::string FindInputProblem(vtkPolyData* input);
+
 // The spread of the points across their flattest direction (the principal axis of least
 // variance), `thickness`, and along their longest one, `size`. A flat input (all points in one
 // plane, in any orientation) has a thickness of 0 up to rounding.

@@ -2,6 +2,7 @@
 
 #include "vtkIceShaderSections.h"
 #include "vtkIceSmoothNormals.h"
+#include "vtkIceSurfaceCheck.h"
 #include "vtkIceWorldSpaceFS.h"
 #include "vtkIceWorldSpaceVS.h"
 
@@ -30,20 +31,6 @@
 namespace
 {
 const char* const IceNormalArray = "vtkIceNormals";
-
-bool HasOnlyFinitePoints(vtkPoints* points)
-{
-  vtkDataArray* data = points->GetData();
-  const vtkIdType n = data->GetNumberOfValues();
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    if (!std::isfinite(data->GetComponent(i / 3, static_cast<int>(i % 3))))
-    {
-      return false;
-    }
-  }
-  return true;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -57,6 +44,12 @@ vtkIceWorldSpaceMapper::vtkIceWorldSpaceMapper()
 vtkIceWorldSpaceMapper::~vtkIceWorldSpaceMapper() = default;
 
 //------------------------------------------------------------------------------
+std::string vtkIceWorldSpaceMapper::CheckInput(vtkPolyData* input)
+{
+  return vtkIceSurfaceCheck::FindInputProblem(input);
+}
+
+//------------------------------------------------------------------------------
 bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
 {
   if (input == this->PreparedSource && input->GetMTime() == this->PreparedInputTime)
@@ -68,17 +61,10 @@ bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
   this->PreparedValid = false;
   this->PreparedInput = nullptr;
 
-  const vtkIdType surfaces = input->GetNumberOfPolys() + input->GetNumberOfStrips();
-  if (input->GetNumberOfPoints() == 0 || surfaces == 0)
+  const std::string problem = CheckInput(input);
+  if (!problem.empty())
   {
-    vtkErrorMacro(<< "Input has no polygons to render as ice (" << input->GetNumberOfPoints()
-                  << " points, " << input->GetNumberOfLines() << " lines, "
-                  << input->GetNumberOfVerts() << " vertices); it is not drawn.");
-    return false;
-  }
-  if (!HasOnlyFinitePoints(input->GetPoints()))
-  {
-    vtkErrorMacro(<< "Input has NaN or infinite point coordinates; it is not drawn as ice.");
+    vtkErrorMacro(<< problem);
     return false;
   }
 

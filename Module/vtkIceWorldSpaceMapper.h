@@ -40,6 +40,16 @@ public:
   double* GetBounds() override;
   void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
 
+  /**
+   * Why `input` cannot be drawn as ice, in one sentence (the error the mapper reports), or an
+   * empty string when it can. Besides empty input and NaN or infinite coordinates it rejects
+   * broken connectivity that would crash VTK's filters: a cell naming a point that does not
+   * exist, a polygon or strip of fewer than three points, inconsistent cell offsets, point
+   * arrays with fewer values than points, and input whose points all coincide. Applications that
+   * read meshes from files can call it before handing the data to any filter.
+   */
+  static std::string CheckInput(vtkPolyData* input);
+
 protected:
   vtkIceWorldSpaceMapper();
   ~vtkIceWorldSpaceMapper() override;
