@@ -20,6 +20,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <set>
 #include <string>
 #include <system_error>
@@ -62,6 +63,12 @@ std::string Size(int width, int height)
 {
   return std::to_string(width) + "x" + std::to_string(height);
 }
+
+// Limits on what a header may ask for, checked before any pixel is allocated: a hostile or broken
+// header otherwise makes the reader allocate gigabytes (and abort). 2^28 pixels is 16384x16384,
+// twice the largest common HDR panoramas (16384x8192); faces as large as vtkIceCubeMapSource's.
+constexpr long long MaximumPixels = 1LL << 28;
+constexpr int MaximumFaceSize = 8192;
 
 struct Failure
 {
@@ -106,6 +113,13 @@ bool ReadHeader(const std::string& path, OIIO::ImageSpec& spec, Failure& failure
   if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0)
   {
     failure = { "Environment image '" + path + "' is not a 2D image with pixels",
+      vtkErrorCode::FileFormatError };
+    return false;
+  }
+  if (static_cast<long long>(spec.width) * spec.height > MaximumPixels)
+  {
+    failure = { "Environment image '" + path + "' is " + Size(spec.width, spec.height) +
+        ", more than the " + std::to_string(MaximumPixels) + " pixels the reader accepts",
       vtkErrorCode::FileFormatError };
     return false;
   }
@@ -219,6 +233,13 @@ bool MakeFacesPlan(const std::string& folder, Plan& plan, Failure& failure)
         vtkErrorCode::FileFormatError };
       return false;
     }
+    if (spec.width > MaximumFaceSize)
+    {
+      failure = { "Cube face '" + path + "' is " + Size(spec.width, spec.height) +
+          ", more than the " + Size(MaximumFaceSize, MaximumFaceSize) + " the reader accepts",
+        vtkErrorCode::FileFormatError };
+      return false;
+    }
     plan.Width = spec.width;
     plan.Height = spec.height;
     plan.Float = plan.Float || !IsEightBit(spec);
@@ -264,6 +285,14 @@ bool MakeImagePlan(const std::string& path, int faceSize, Plan& plan, Failure& f
       vtkErrorCode::FileFormatError };
     return false;
   }
+  if (plan.FaceSize > MaximumFaceSize)
+  {
+    failure = { "Environment image '" + path + "' would give cube faces of " +
+        Size(plan.FaceSize, plan.FaceSize) + ", more than the " +
+        Size(MaximumFaceSize, MaximumFaceSize) + " the reader accepts",
+      vtkErrorCode::FileFormatError };
+    return false;
+  }
   return true;
 }
 
@@ -282,6 +311,13 @@ bool MakePlan(const char* fileName, int faceSize, Plan& plan, Failure& failure)
   if (!std::filesystem::exists(status))
   {
     failure = { "Environment '" + path + "' does not exist", vtkErrorCode::FileNotFoundError };
+    return false;
+  }
+  if (!std::filesystem::is_directory(status) && !std::filesystem::is_regular_file(status))
+  {
+    // A device such as /dev/zero, or a pipe, would be read for ever.
+    failure = { "Environment '" + path + "' is neither a folder nor a regular file",
+      vtkErrorCode::FileFormatError };
     return false;
   }
   const bool ok = std::filesystem::is_directory(status)
@@ -577,8 +613,18 @@ int vtkIceEnvironmentReader::RequestData(
     return 1;
   }
   Failure failure;
-  const bool ok = plan.Float ? ReadFaces<float>(plan, outputVector, failure)
-                             : ReadFaces<unsigned char>(plan, outputVector, failure);
+  bool ok = false;
+  try
+  {
+    ok = plan.Float ? ReadFaces<float>(plan, outputVector, failure)
+                    : ReadFaces<unsigned char>(plan, outputVector, failure);
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = { "Not enough memory to read environment '" + plan.Files[0] + "' (" +
+        Size(plan.Width, plan.Height) + ", faces of " + Size(plan.FaceSize, plan.FaceSize) + ")",
+      vtkErrorCode::UnknownError };
+  }
   if (!ok)
   {
     for (int face = 0; face < NumberOfFaces; ++face)

@@ -37,8 +37,13 @@
  * otherwise (16-bit, half or float images such as EXR and HDR), in which case values above 1 are
  * kept. Alpha channels are dropped; grey images are expanded to RGB.
  *
+ * Limits, checked on the headers before any pixel is read: at most 2^28 pixels per image (16384 x
+ * 16384) and faces of at most 8192 x 8192; FileName must be a folder or a regular file (not a
+ * device or a pipe, which would be read for ever).
+ *
  * Bad input (no such file or folder, a missing face file, an unreadable or corrupt image, faces
- * that are not square or not of one size, a single image of another aspect ratio) gives one VTK
+ * that are not square or not of one size, a single image of another aspect ratio, an image over
+ * the limits, not enough memory for the pixels) gives one VTK
  * error naming the file and the problem, sets ErrorCode, and leaves all six outputs empty (no
  * points). A vtkTexture fed by empty outputs reports that it has no scalars and draws nothing.
  *
