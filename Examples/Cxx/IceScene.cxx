@@ -1,4 +1,5 @@
 #include "IceScene.h"
+#include "IceModelFile.h"
 
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapSource.h"
@@ -39,7 +40,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <new>
+#include <system_error>
 
 namespace IceScene
 {
@@ -74,10 +79,18 @@ bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error)
   // VTK also logs errors to stderr through vtkLogger, bypassing the output window.
   const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  algorithm->Update();
+  try
+  {
+    algorithm->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    // A header announcing more data than memory holds (readers allocate before they read).
+    capture->FirstMessage = "not enough memory for what the file announces";
+  }
   vtkLogger::SetStderrVerbosity(verbosity);
   vtkOutputWindow::SetInstance(previous);
-  error = capture->FirstMessage;
+  error = IceModelFile::Printable(capture->FirstMessage);
   return error.empty();
 }
 
@@ -96,9 +109,31 @@ std::string Extension(const std::string& path)
   return ext;
 }
 
-bool Readable(const std::string& path)
+// Why the file at `path` cannot be handed to a reader, or "": it must be a regular file (a
+// device such as /dev/zero or a pipe would never end), readable, and for the formats whose VTK
+// readers trust their headers, consistent with them (IceModelFile.h).
+std::string FileProblem(const std::string& path)
 {
-  return std::ifstream(path).good();
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status))
+  {
+    return "cannot open model file '" + IceModelFile::Printable(path) + "'";
+  }
+  if (!std::filesystem::is_regular_file(status))
+  {
+    return "model '" + IceModelFile::Printable(path) + "' is not a regular file";
+  }
+  if (!std::ifstream(path).good())
+  {
+    return "cannot open model file '" + IceModelFile::Printable(path) + "'";
+  }
+  const std::string ext = Extension(path);
+  const std::string problem = ext == "stl" ? IceModelFile::CheckSTL(path)
+    : ext == "ply"                         ? IceModelFile::CheckPLY(path)
+                                           : std::string();
+  return problem.empty() ? problem
+                         : "cannot read model '" + IceModelFile::Printable(path) + "': " + problem;
 }
 
 vtkSmartPointer<vtkAlgorithm> ModelReader(const std::string& path, std::string& error)
@@ -137,18 +172,23 @@ vtkSmartPointer<vtkAlgorithm> ModelReader(const std::string& path, std::string& 
   }
   else
   {
-    error = "unknown model '" + path + "' (use teapot, block, sphere or a .vtp, .vtk, .stl, .obj or .ply file)";
+    error = "unknown model '" + IceModelFile::Printable(path) + "' (use teapot, block, sphere or a .vtp, .vtk, .stl, .obj or .ply file)";
   }
   return reader;
 }
 
-// Centres the model at the origin with its largest extent scaled to 2.
+// Centres the model at the origin with its largest extent scaled to 2; nullptr when the extent
+// is too small to scale (the model passed vtkIceMapper::CheckInput, so it is not 0).
 vtkSmartPointer<vtkPolyData> Normalize(vtkPolyData* model)
 {
   double bounds[6];
   model->GetBounds(bounds);
   const double extent =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  if (!std::isfinite(2.0 / extent))
+  {
+    return nullptr;
+  }
   vtkNew<vtkTransform> transform;
   transform->Scale(2.0 / extent, 2.0 / extent, 2.0 / extent);
   transform->Translate(-0.5 * (bounds[0] + bounds[1]), -0.5 * (bounds[2] + bounds[3]),
@@ -286,24 +326,37 @@ vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& er
     {
       return nullptr;
     }
-    if (!Readable(model))
+    error = FileProblem(model);
+    if (!error.empty())
     {
-      error = "cannot open model file '" + model + "'";
       return nullptr;
     }
   }
+  const std::string name = IceModelFile::Printable(model);
   if (!UpdateQuietly(source, error))
   {
-    error = "cannot read model '" + model + "': " + error;
+    error = "cannot read model '" + name + "': " + error;
     return nullptr;
   }
   vtkPolyData* output = vtkPolyData::SafeDownCast(source->GetOutputDataObject(0));
   if (!output || output->GetNumberOfPolys() + output->GetNumberOfStrips() == 0)
   {
-    error = "model '" + model + "' has no polygons";
+    error = "model '" + name + "' has no polygons";
     return nullptr;
   }
-  return Normalize(output);
+  // Broken connectivity crashes VTK's filters (bounds, normals): check before any of them runs.
+  const std::string problem = vtkIceMapper::CheckInput(output);
+  if (!problem.empty())
+  {
+    error = "cannot use model '" + name + "': " + problem;
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPolyData> normalized = Normalize(output);
+  if (!normalized)
+  {
+    error = "cannot use model '" + name + "': its extent is too small to scale";
+  }
+  return normalized;
 }
 
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error)
