@@ -3,6 +3,7 @@
 // object, interleaved with it round by round, and reported as a ratio to it.
 #include "IceBench.h"
 #include "IceHeadless.h"
+#include "IceOutputFile.h"
 #include "IceScene.h"
 
 #include "vtkIceCubeMapPass.h"
@@ -133,6 +134,10 @@ int Parse(int argc, char* argv[], Options& options)
     }
     else if (arg == "--plot")
     {
+      if (!value.empty() && IceOutputFile::ImageFormat(value).empty())
+      {
+        return Fail("bad --plot '" + value + "' (the name must end in .png, .jpg or .jpeg)", 2);
+      }
       options.Plot = value;
     }
     else if (arg == "--markdown")
@@ -794,9 +799,9 @@ const char* MaterialName(Material m)
   return "";
 }
 
-bool WriteCsv(const std::string& path, const std::vector<Group>& groups, const Machine& machine)
+std::string Csv(const std::vector<Group>& groups, const Machine& machine)
 {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,"
          "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
          "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
@@ -823,13 +828,13 @@ bool WriteCsv(const std::string& path, const std::vector<Group>& groups, const M
           << machine.Renderer << "\"," << machine.MultiSamples << "\n";
     }
   }
-  return out.good();
+  return out.str();
 }
 
-bool WriteMarkdown(const std::string& path, const std::vector<Group>& groups,
+std::string Markdown(const std::vector<Group>& groups,
   const std::vector<IceBench::Target>& targets, const Machine& machine, int frames)
 {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "| machine | |\n|---|---|\n";
   out << "| renderer | " << machine.Renderer << " (OpenGL " << machine.GLVersion << ") |\n";
   out << "| CPU | " << machine.CPU << ", " << machine.Threads << " threads |\n";
@@ -862,7 +867,7 @@ bool WriteMarkdown(const std::string& path, const std::vector<Group>& groups,
           << " |\n";
     }
   }
-  return out.good();
+  return out.str();
 }
 }
 
@@ -874,11 +879,15 @@ int main(int argc, char* argv[])
   {
     return parsed;
   }
+  IceOutputFile::RemoveTemporaryOnSignals();
+  // Checked before the run, without creating anything: the files are written only at the end,
+  // each whole or not at all (IceOutputFile.h).
   for (const std::string& path : { options.Csv, options.Plot, options.Markdown })
   {
-    if (!path.empty() && !std::ofstream(path, std::ios::app).good())
+    const std::string problem = path.empty() ? path : IceOutputFile::CheckWritable(path);
+    if (!problem.empty())
     {
-      return Fail("cannot write '" + path + "'", 1);
+      return Fail(problem, 1);
     }
   }
 
@@ -1016,17 +1025,20 @@ int main(int argc, char* argv[])
 
   if (!options.Csv.empty())
   {
-    if (!WriteCsv(options.Csv, groups, machine))
+    const std::string problem = IceOutputFile::Write(options.Csv, Csv(groups, machine));
+    if (!problem.empty())
     {
-      return Fail("cannot write '" + options.Csv + "'", 1);
+      return Fail(problem, 1);
     }
     std::cout << "ice-bench: wrote " << options.Csv << "\n";
   }
   if (!options.Markdown.empty())
   {
-    if (!WriteMarkdown(options.Markdown, groups, targets, machine, frames))
+    const std::string problem =
+      IceOutputFile::Write(options.Markdown, Markdown(groups, targets, machine, frames));
+    if (!problem.empty())
     {
-      return Fail("cannot write '" + options.Markdown + "'", 1);
+      return Fail(problem, 1);
     }
     std::cout << "ice-bench: wrote " << options.Markdown << "\n";
   }

@@ -1,5 +1,6 @@
 // ice-bench's plot: four VTK charts rendered offscreen into one PNG.
 #include "IceBench.h"
+#include "IceOutputFile.h"
 
 #include "vtkAxis.h"
 #include "vtkChartLegend.h"
@@ -9,7 +10,6 @@
 #include "vtkContextScene.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPen.h"
 #include "vtkPlot.h"
 #include "vtkPlotBar.h"
@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 
 namespace
@@ -373,13 +372,6 @@ std::string IceBench::WritePlot(
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (!std::ifstream(path).good())
-  {
-    return "cannot write '" + path + "'";
-  }
-  return std::string();
+  grab->Update();
+  return IceOutputFile::WriteImage(path, grab->GetOutput());
 }

@@ -1,12 +1,12 @@
 // ice-render: renders a model as ice in front of an environment, to a PNG or in a window.
 #include "IceHeadless.h"
+#include "IceOutputFile.h"
 #include "IceScene.h"
 
 #include "vtkActor.h"
 #include "vtkIceMapper.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
@@ -15,7 +15,6 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -30,7 +29,8 @@ const char* const Usage =
   "  --env    sky, test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
   "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too)\n"
   "  --size   image size, default 1024x768\n"
-  "  --out    output PNG, default ice.png\n"
+  "  --out    output image, .png or .jpg (default ice.png); replaced only once the new image\n"
+  "           is complete: a failed or interrupted run leaves the old file as it was\n"
   "  --one-sided  refract at the front face only (the default blends in the back face)\n"
   "  --static     no landscape and no dynamic cube map: the ice sees the environment map only\n"
   "  --interactive  open a window with a trackball camera instead of writing a file\n"
@@ -113,6 +113,10 @@ int Parse(int argc, char* argv[], Options& options)
       }
       else if (arg == "--out")
       {
+        if (IceOutputFile::ImageFormat(text).empty())
+        {
+          return Fail("bad --out '" + text + "' (the name must end in .png, .jpg or .jpeg)", 2);
+        }
         options.Output = text;
       }
       else if (arg == "--backend")
@@ -140,6 +144,7 @@ int Parse(int argc, char* argv[], Options& options)
 
 int main(int argc, char* argv[])
 {
+  IceOutputFile::RemoveTemporaryOnSignals();
   Options options;
   const int parsed = Parse(argc, argv, options);
   if (parsed >= 0)
@@ -158,9 +163,12 @@ int main(int argc, char* argv[])
   {
     return Fail(error, 1);
   }
-  if (!options.Interactive && !std::ofstream(options.Output).good())
+  // Checked now, before minutes of rendering; nothing is written until the image is complete.
+  const std::string outputProblem =
+    options.Interactive ? std::string() : IceOutputFile::CheckWritable(options.Output);
+  if (!outputProblem.empty())
   {
-    return Fail("cannot write '" + options.Output + "'", 1);
+    return Fail(outputProblem, 1);
   }
 
   // Every vtkRenderWindow from here on renders through the chosen back end.
@@ -203,10 +211,12 @@ int main(int argc, char* argv[])
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(options.Output.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
+  grab->Update();
+  const std::string writeProblem = IceOutputFile::WriteImage(options.Output, grab->GetOutput());
+  if (!writeProblem.empty())
+  {
+    return Fail(writeProblem, 1);
+  }
   std::cout << "ice-render: wrote " << options.Output << " (" << options.Width << "x"
             << options.Height << ", model " << options.Model << ", back end " << backend << ")\n";
   return 0;
