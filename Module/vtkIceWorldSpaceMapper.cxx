@@ -9,6 +9,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLActor.h"
@@ -112,12 +113,21 @@ void vtkIceWorldSpaceMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 //------------------------------------------------------------------------------
 double* vtkIceWorldSpaceMapper::GetBounds()
 {
-  double* bounds = this->Superclass::GetBounds();
-  if (vtkPolyData* input = this->GetInput())
+  if (this->GetInput())
   {
-    this->PrepareInput(input);
+    if (!this->Static)
+    {
+      this->Update();
+    }
+    // Checked before VTK computes the bounds of the cells: with a point id out of range,
+    // vtkPolyData::GetCellsBounds writes outside its arrays. Broken input has no bounds.
+    if (!this->PrepareInput(this->GetInput()))
+    {
+      vtkMath::UninitializeBounds(this->Bounds);
+      return this->Bounds;
+    }
   }
-  return bounds;
+  return this->Superclass::GetBounds();
 }
 
 //------------------------------------------------------------------------------
