@@ -1,5 +1,6 @@
 #include "IceScene.h"
 #include "IceModelFile.h"
+#include "IceReading.h"
 
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapSource.h"
@@ -19,10 +20,7 @@
 #include "vtkExecutive.h"
 #include "vtkNew.h"
 #include "vtkLight.h"
-#include "vtkLogger.h"
 #include "vtkOBJReader.h"
-#include "vtkObjectFactory.h"
-#include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPolyData.h"
 #include "vtkPlaneSource.h"
@@ -43,57 +41,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <new>
 #include <system_error>
 
 namespace IceScene
 {
 namespace
 {
-// Collects VTK's error text while loading files, so that ice-render reports one clean line.
-class CapturedOutput : public vtkOutputWindow
-{
-public:
-  static CapturedOutput* New() { VTK_STANDARD_NEW_BODY(CapturedOutput); }
-  void DisplayText(const char* text) override
-  {
-    if (this->FirstMessage.empty() && text)
-    {
-      // Keep the message, not VTK's "ERROR: In file, line N / vtkClass (address): " preamble.
-      std::string message = text;
-      const std::string::size_type start = message.find("): ");
-      message = start == std::string::npos ? message : message.substr(start + 3);
-      message.erase(std::remove(message.begin(), message.end(), '\n'), message.end());
-      this->FirstMessage = message;
-    }
-  }
-  std::string FirstMessage;
-};
-
-// Runs `algorithm` with VTK's console output captured; false and `error` set if it complained.
-bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error)
-{
-  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
-  vtkNew<CapturedOutput> capture;
-  vtkOutputWindow::SetInstance(capture);
-  // VTK also logs errors to stderr through vtkLogger, bypassing the output window.
-  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  try
-  {
-    algorithm->Update();
-  }
-  catch (const std::bad_alloc&)
-  {
-    // A header announcing more data than memory holds (readers allocate before they read).
-    capture->FirstMessage = "not enough memory for what the file announces";
-  }
-  vtkLogger::SetStderrVerbosity(verbosity);
-  vtkOutputWindow::SetInstance(previous);
-  error = IceModelFile::Printable(capture->FirstMessage);
-  return error.empty();
-}
-
 vtkSmartPointer<vtkPolyDataMapper> MakeMapper(vtkAlgorithm* source)
 {
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
@@ -303,6 +256,7 @@ void AddLandscape(vtkRenderer* renderer, double groundHeight)
 vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& error)
 {
   vtkSmartPointer<vtkAlgorithm> source;
+  const bool file = model != "teapot" && model != "block" && model != "sphere";
   if (model == "teapot")
   {
     source = vtkSmartPointer<vtkIceTeapotSource>::New();
@@ -333,12 +287,21 @@ vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& er
     }
   }
   const std::string name = IceModelFile::Printable(model);
-  if (!UpdateQuietly(source, error))
+  // Files are read in a child process: VTK's readers crash on some broken files.
+  vtkSmartPointer<vtkPolyData> output;
+  if (file)
+  {
+    output = IceReading::ReadPolyDataIsolated(source, error);
+  }
+  else if (IceReading::UpdateQuietly(source, error))
+  {
+    output = vtkPolyData::SafeDownCast(source->GetOutputDataObject(0));
+  }
+  if (!error.empty())
   {
     error = "cannot read model '" + name + "': " + error;
     return nullptr;
   }
-  vtkPolyData* output = vtkPolyData::SafeDownCast(source->GetOutputDataObject(0));
   if (!output || output->GetNumberOfPolys() + output->GetNumberOfStrips() == 0)
   {
     error = "model '" + name + "' has no polygons";
@@ -375,7 +338,7 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
   // A folder of six faces, a cross or a panorama; the reader names the file and the problem.
   vtkNew<vtkIceEnvironmentReader> reader;
   reader->SetFileName(environment.c_str());
-  if (!UpdateQuietly(reader, error))
+  if (!IceReading::UpdateQuietly(reader, error))
   {
     error = "cannot load environment '" + environment + "': " + error;
     return nullptr;
