@@ -73,15 +73,10 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   vtkRenderer* renderer = s->GetRenderer();
   vtkCamera* camera = renderer->GetActiveCamera();
 
-  // Near and far planes on the props' bounding box: the depth test in this pass gets all the
-  // depth buffer's precision. The texture stores linear view depth, independent of them.
-  double clipping[2];
-  camera->GetClippingRange(clipping);
-  if (FitDepthRange(s, camera->GetPosition(), camera->GetDirectionOfProjection(), this->DepthRange))
-  {
-    const double nearest = std::max(this->DepthRange[0], 1e-3 * this->DepthRange[1]);
-    camera->SetClippingRange(0.99 * nearest, 1.01 * this->DepthRange[1]);
-  }
+  // The texture stores linear view depth, so the user's near and far planes serve the depth test
+  // as they are: where two faces tie within the depth buffer's precision, the depths stored for
+  // either differ by as little. The camera is never touched (its observers would re-render).
+  FitDepthRange(s, camera->GetPosition(), camera->GetDirectionOfProjection(), this->DepthRange);
 
   {
     vtkIceScreenTarget::Drawing drawing(*this->Target, s, 2);
@@ -107,7 +102,6 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
     this->Stage = 0;
     this->PostRender(s);
   }
-  camera->SetClippingRange(clipping);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 

@@ -36,7 +36,7 @@ public:
   vtkTextureObject* GetDepthTexture();
 
   /**
-   * View-depth range of the props' bounding box in the last Render (the fitted near and far).
+   * View-depth range of the props' bounding box in the last Render (nearest and farthest).
    */
   vtkGetVector2Macro(DepthRange, double);
 

@@ -1,0 +1,75 @@
+// vtkIcePass never touches the user's camera: ten renders of an unchanged view of the full ice
+// (two-sided refraction, cracks and air, so the depth-interval pass runs, and the dynamic cube
+// map) fire no ModifiedEvent on the camera and leave its MTime and clipping range as they were.
+// Interactors, linked views and ParaView re-render on camera events.
+#include "vtkIceBlockSource.h"
+#include "vtkIceCubeMapPass.h"
+#include "vtkIceDepthIntervalPass.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <iostream>
+
+namespace
+{
+void Count(vtkObject*, unsigned long, void* clientData, void*)
+{
+  ++*static_cast<int*>(clientData);
+}
+}
+
+int TestIcePassCamera(int, char*[])
+{
+  vtkNew<vtkIceBlockSource> block;
+  vtkNew<vtkIceMapper> mapper;
+  mapper->SetInputConnection(block->GetOutputPort());
+  mapper->SetNumberOfCracks(4);
+  mapper->SetNumberOfAirPlanes(5);
+  vtkNew<vtkActor> ice;
+  ice->SetMapper(mapper);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(ice);
+  vtkNew<vtkIcePass> icePass;
+  vtkNew<vtkIceCubeMapPass> cubeMapPass;
+  icePass->SetCubeMapPass(cubeMapPass);
+  renderer->SetPass(icePass);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(160, 120);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(2.0, 1.5, 4.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  // A clipping range wider than the ice's depths: a pass fitting near and far changes it.
+  camera->SetClippingRange(0.1, 100.0);
+  window->Render();
+
+  int modified = 0;
+  vtkNew<vtkCallbackCommand> counter;
+  counter->SetCallback(Count);
+  counter->SetClientData(&modified);
+  camera->AddObserver(vtkCommand::ModifiedEvent, counter);
+  const vtkMTimeType mtime = camera->GetMTime();
+  for (int frame = 0; frame < 10; ++frame)
+  {
+    window->Render();
+  }
+  double clipping[2];
+  camera->GetClippingRange(clipping);
+  const bool ok = modified == 0 && camera->GetMTime() == mtime && clipping[0] == 0.1 &&
+    clipping[1] == 100.0 && icePass->GetDepthIntervalPass()->GetNumberOfGeometryPasses() >= 20;
+  std::cout << (ok ? "ok   " : "FAIL ") << "10 renders with the full ice: " << modified
+            << " camera ModifiedEvents, MTime " << mtime << " -> " << camera->GetMTime()
+            << ", clipping range " << clipping[0] << ", " << clipping[1] << "\n";
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
