@@ -189,7 +189,7 @@ void iceGlisteningAddSceneLight(IceGlisteningSurface s, vec3 position, int posit
       IceGlisteningSurface glisten;
       glisten.normal = normalize(iceNormalWC);
       if (gl_FrontFacing == false) { glisten.normal = -glisten.normal; }
-      glisten.toEye = normalize(iceCameraWC - icePositionWC);
+      glisten.toEye = -iceEyeVectorWC(icePositionWC);
       vec3 glistenMC = (iceGlisteningWCMC * vec4(icePositionWC, 1.0)).xyz;
       // Model-space gradients and normals to world space (the inverse transpose of model to world).
       mat3 glistenToWorld = transpose(mat3(iceGlisteningWCMC));

@@ -5,7 +5,7 @@ uniform float iceRefractionRatio;
 uniform vec3 iceTint;
 //ICE::Impl
   {
-    vec3 e = normalize(icePositionWC - iceCameraWC);
+    vec3 e = iceEyeVectorWC(icePositionWC);
     vec3 nFront = normalize(iceNormalWC);
     if (gl_FrontFacing == false) { nFront = -nFront; }
     float fresnel = iceFresnelFactor;

@@ -2,5 +2,5 @@
 uniform float iceFresnelPower;
 out float iceFresnelFactor;
 //ICE::Impl
-  iceFresnelFactor = iceFresnel(normalize(icePositionWC - iceCameraWC), normalize(iceNormalWC),
+  iceFresnelFactor = iceFresnel(iceEyeVectorWC(icePositionWC), normalize(iceNormalWC),
     iceFresnelPower);

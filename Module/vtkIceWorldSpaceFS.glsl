@@ -6,7 +6,15 @@ in vec3 iceNormalModel;
 uniform mat3 iceNormalMCWCMatrix;
 uniform vec3 iceCameraWC;
 uniform vec3 iceViewDirectionWC; // unit direction of projection
+uniform int iceParallelProjection;
 uniform ivec2 iceViewportOrigin; // window position of texel (0, 0) of viewport-sized textures
+
+// Unit eye vector e, from the eye to a point: the same direction of projection for every point
+// under parallel projection.
+vec3 iceEyeVectorWC(vec3 positionWC)
+{
+  return iceParallelProjection != 0 ? iceViewDirectionWC : normalize(positionWC - iceCameraWC);
+}
 
 // Distance of this fragment in front of the camera along the view direction (-z in view space).
 float iceViewDepth()

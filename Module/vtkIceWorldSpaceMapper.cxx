@@ -219,6 +219,7 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
     static_cast<float>(direction[1]), static_cast<float>(direction[2]) };
   program->SetUniform3f("iceCameraWC", eyeWC);
   program->SetUniform3f("iceViewDirectionWC", directionWC);
+  program->SetUniformi("iceParallelProjection", camera->GetParallelProjection() ? 1 : 0);
 
   // Not GetProjectionTransformMatrix(ren): that one is transposed and must be deleted.
   vtkMatrix4x4* projection =

@@ -4,10 +4,18 @@ uniform mat4 iceMCWCMatrix;       // model (VBO shift/scale included) to world
 uniform mat3 iceNormalMCWCMatrix; // model to world for normals
 uniform mat4 iceVBOToModelMatrix; // undoes the VBO shift/scale: true model coordinates
 uniform vec3 iceCameraWC;
+uniform vec3 iceViewDirectionWC; // unit direction of projection
+uniform int iceParallelProjection;
 out vec3 icePositionWC;
 out vec3 iceNormalWC;
 out vec3 icePositionMC;
 out vec3 iceNormalModel;
+// Unit eye vector e, from the eye to a point: the same direction of projection for every point
+// under parallel projection.
+vec3 iceEyeVectorWC(vec3 positionWC)
+{
+  return iceParallelProjection != 0 ? iceViewDirectionWC : normalize(positionWC - iceCameraWC);
+}
 //ICE::Impl
   icePositionWC = (iceMCWCMatrix * vertexMC).xyz;
   iceNormalWC = iceNormalMCWCMatrix * iceNormalMC;

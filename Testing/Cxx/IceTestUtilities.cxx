@@ -171,7 +171,22 @@ vtkSmartPointer<vtkTexture> MakeCubeMap(int pattern, int faceSize)
 
 void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double direction[3])
 {
-  renderer->GetActiveCamera()->GetPosition(origin);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (camera->GetParallelProjection())
+  {
+    // Every ray runs along the direction of projection, from the pixel on the near plane.
+    renderer->SetDisplayPoint(x + 0.5, y + 0.5, 0.0);
+    renderer->DisplayToWorld();
+    double world[4];
+    renderer->GetWorldPoint(world);
+    for (int i = 0; i < 3; ++i)
+    {
+      origin[i] = world[i] / world[3];
+    }
+    camera->GetDirectionOfProjection(direction);
+    return;
+  }
+  camera->GetPosition(origin);
   renderer->SetDisplayPoint(x + 0.5, y + 0.5, 0.5);
   renderer->DisplayToWorld();
   double world[4];

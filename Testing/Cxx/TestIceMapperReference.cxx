@@ -1,8 +1,8 @@
 // Renders ice spheres in a synthetic cube map and compares every interior pixel with the GLM
 // reference (vtkIceOpticsReference.h) evaluated for that pixel's view ray: one-sided (eqs 2-4)
 // without vtkIcePass, and two-sided (eq 1 with the sphere's analytic back normal) with it.
-// Three placements: at the origin, moved/rotated/scaled by the actor, and far from the origin
-// (where VTK shifts and scales the vertex buffer).
+// Four placements: at the origin, moved/rotated/scaled by the actor, far from the origin (where
+// VTK shifts and scales the vertex buffer), and at the origin seen in parallel projection.
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
@@ -30,6 +30,7 @@ struct Placement
   double Position[3];
   double Scale;
   double RotationY;
+  bool Parallel; // parallel projection: every eye vector is the direction of projection
 };
 
 enum class Mode
@@ -83,6 +84,8 @@ bool CheckPlacement(const Placement& placement, Mode mode)
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(center);
   camera->SetPosition(center[0] + 0.9, center[1] + 1.2, center[2] + 3.6 * radius);
+  camera->SetParallelProjection(placement.Parallel);
+  camera->SetParallelScale(1.3 * radius);
   renderer->ResetCameraClippingRange();
   window->Render();
 
@@ -99,9 +102,10 @@ bool CheckPlacement(const Placement& placement, Mode mode)
 int TestIceMapperReference(int, char*[])
 {
   const Placement placements[] = {
-    { "origin", { 0, 0, 0 }, 1.0, { 0, 0, 0 }, 1.0, 0.0 },
-    { "actor-transform", { 0.1, 0, 0 }, 1.2, { 0.3, -0.2, 0.1 }, 0.7, 30.0 },
-    { "far-from-origin", { 800, -300, 50 }, 1.0, { 0, 0, 0 }, 1.0, 0.0 },
+    { "origin", { 0, 0, 0 }, 1.0, { 0, 0, 0 }, 1.0, 0.0, false },
+    { "actor-transform", { 0.1, 0, 0 }, 1.2, { 0.3, -0.2, 0.1 }, 0.7, 30.0, false },
+    { "far-from-origin", { 800, -300, 50 }, 1.0, { 0, 0, 0 }, 1.0, 0.0, false },
+    { "parallel-projection", { 0, 0, 0 }, 1.0, { 0, 0, 0 }, 1.0, 0.0, true },
   };
   bool ok = true;
   for (const Placement& placement : placements)
