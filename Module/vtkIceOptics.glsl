@@ -22,8 +22,10 @@ vec3 iceRefract(vec3 e, vec3 n, float eta)
   return dot(r, r) > 0.0 ? r : iceReflect(e, n);
 }
 
-// Eq 4: Fresnel approximation, evaluated per vertex and interpolated.
+// Eq 4: Fresnel approximation, evaluated per vertex and interpolated. The base is clamped: |e.n|
+// of unit vectors can round past 1 (pow of a negative base is undefined in GLSL), and 0^0 is
+// undefined too (power 0 is allowed), so the base stays in [1e-6, 1].
 float iceFresnel(vec3 e, vec3 n, float power)
 {
-  return pow(1.0 - abs(dot(e, n)), power);
+  return pow(clamp(1.0 - abs(dot(e, n)), 1.0e-6, 1.0), power);
 }

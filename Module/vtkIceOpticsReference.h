@@ -39,10 +39,10 @@ inline Vec3 Refract(const Vec3& e, const Vec3& n, double eta)
   return eta * e - (eta * ne + std::sqrt(k)) * n;
 }
 
-// Eq 4: f = (1 - |e . n|)^P.
+// Eq 4: f = (1 - |e . n|)^P, the base clamped to [1e-6, 1] as in the shader.
 inline double Fresnel(const Vec3& e, const Vec3& n, double power)
 {
-  return std::pow(1.0 - std::abs(glm::dot(e, n)), power);
+  return std::pow(std::min(1.0, std::max(1.0e-6, 1.0 - std::abs(glm::dot(e, n)))), power);
 }
 
 struct Material
