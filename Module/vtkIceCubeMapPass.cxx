@@ -180,8 +180,13 @@ void vtkIceCubeMapPass::vtkInternals::Allocate(
     map.Texture->SetWrapS(vtkTextureObject::ClampToEdge);
     map.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
     map.Texture->SetWrapR(vtkTextureObject::ClampToEdge);
+    // Half floats: an HDR environment (and any scene light above 1) reaches the ice as the
+    // static environment texture gives it, instead of clamped to 1 by an 8-bit target.
+    map.Texture->SetInternalFormat(GL_RGBA16F);
+    map.Texture->SetFormat(GL_RGBA);
+    map.Texture->SetDataType(GL_FLOAT);
     void* noData[6] = { nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
-    map.Texture->CreateCubeFromRaw(size, size, 4, VTK_UNSIGNED_CHAR, noData);
+    map.Texture->CreateCubeFromRaw(size, size, 4, VTK_FLOAT, noData);
     map.Rendered = false;
   }
   if (!this->FrameBuffer || this->FrameBuffer->GetContext() != window)
