@@ -1,5 +1,5 @@
 //ICE::Dec
-in vec2 iceAirUV;
+in vec2 iceAirUVVSOutput;
 uniform sampler2D iceAirAtlas;      // bubble images (RGBA)
 uniform sampler2D iceDepthInterval; // front (R) and back (G) view depth of the ice
 uniform float iceMilkiness;         // 0: sparse clear bubbles, 1: white and cloudy
@@ -9,7 +9,7 @@ uniform int iceAirDebug;            // 1: solid green where a bubble covers
     vec2 interval = texelFetch(iceDepthInterval, iceScreenTexel(), 0).rg;
     float depth = iceViewDepth();
     if (depth < interval.x || depth > interval.y) { discard; }
-    vec4 bubble = texture(iceAirAtlas, iceAirUV);
+    vec4 bubble = texture(iceAirAtlas, iceAirUVVSOutput);
     float alpha = clamp(bubble.a * mix(0.45, 1.6, iceMilkiness), 0.0, 1.0);
     vec3 colour = mix(bubble.rgb, vec3(1.0), iceMilkiness);
     if (iceAirDebug == 1)

@@ -1,5 +1,5 @@
 //ICE::Dec
 in vec2 iceAirUVMC;
-out vec2 iceAirUV;
+out vec2 iceAirUVVSOutput;
 //ICE::Impl
-  iceAirUV = iceAirUVMC;
+  iceAirUVVSOutput = iceAirUVMC;

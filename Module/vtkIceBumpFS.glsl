@@ -6,5 +6,5 @@ uniform float iceFresnelPower;
     // A bumpy surface: the normal tilts with the gradient of a noise field fixed to the model, and
     // the tilted normal drives reflection, refraction and a per-fragment Fresnel term.
     nFront = iceBumpNormal(nFront,
-      iceNormalMCWCMatrix * iceNoiseGradient(icePositionMC * iceBumpFrequency), iceBumpStrength);
+      iceNormalMCWCMatrix * iceNoiseGradient(icePositionMCVSOutput * iceBumpFrequency), iceBumpStrength);
     fresnel = iceFresnel(e, nFront, iceFresnelPower);

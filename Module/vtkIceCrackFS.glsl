@@ -17,7 +17,7 @@ uniform float iceBumpFrequency;
   {
     // Bump mapping: tilt the normal by the gradient of a noise field fixed to the crack (in true
     // model coordinates, VTK's shift/scale of the vertex buffer undone).
-    vec3 gradientVC = normalMatrix * iceNoiseGradient(icePositionMC * iceBumpFrequency);
+    vec3 gradientVC = normalMatrix * iceNoiseGradient(icePositionMCVSOutput * iceBumpFrequency);
     normalVCVSOutput = iceBumpNormal(normalVCVSOutput, gradientVC, iceBumpStrength);
   }
 //ICE::Impl

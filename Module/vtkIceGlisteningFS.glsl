@@ -187,10 +187,10 @@ void iceGlisteningAddSceneLight(IceGlisteningSurface s, vec3 position, int posit
 //ICE::Impl
     {
       IceGlisteningSurface glisten;
-      glisten.normal = normalize(iceNormalWC);
+      glisten.normal = normalize(iceNormalWCVSOutput);
       if (gl_FrontFacing == false) { glisten.normal = -glisten.normal; }
-      glisten.toEye = -iceEyeVectorWC(icePositionWC);
-      vec3 glistenMC = (iceGlisteningWCMC * vec4(icePositionWC, 1.0)).xyz;
+      glisten.toEye = -iceEyeVectorWC(icePositionWCVSOutput);
+      vec3 glistenMC = (iceGlisteningWCMC * vec4(icePositionWCVSOutput, 1.0)).xyz;
       // Model-space gradients and normals to world space (the inverse transpose of model to world).
       mat3 glistenToWorld = transpose(mat3(iceGlisteningWCMC));
       glisten.wavy = iceGlisteningWavyNormal(glistenMC, glisten.normal, glistenToWorld);

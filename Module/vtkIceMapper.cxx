@@ -675,7 +675,7 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 
 //------------------------------------------------------------------------------
 void vtkIceMapper::ReplaceIceShaderValues(
-  std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
+  std::string& vs, std::string& fs, vtkRenderer* ren, vtkActor* act)
 {
   using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
@@ -716,6 +716,13 @@ void vtkIceMapper::ReplaceIceShaderValues(
   if (variant & DepthDebugPart)
   {
     vtkShaderProgram::Substitute(fs, "//ICEHOOK::Debug", Get(vtkIceDebugDepthFS, "Impl"));
+  }
+  if (this->DrawingEdges(ren, act))
+  {
+    // VTK's edge code (before the lighting) weighs edge pixels by emix; the ice colour replaces
+    // the lit colour, so the edges go over it here.
+    vtkShaderProgram::Substitute(
+      fs, "//ICEHOOK::Edges", "gl_FragData[0].rgb = mix(gl_FragData[0].rgb, edgeColor, emix);");
   }
   if (variant & (BumpPart | NormalMapPart))
   {

@@ -7,8 +7,8 @@ uniform float iceFresnelPower;
     {
       // The map projected on the three model planes (no texture coordinates needed), each
       // tilting the model normal within its plane, blended by how much the normal faces it.
-      vec3 n = normalize(iceNormalModel);
-      vec3 p = icePositionMC * iceBumpFrequency;
+      vec3 n = normalize(iceNormalModelVSOutput);
+      vec3 p = icePositionMCVSOutput * iceBumpFrequency;
       vec2 tx = (texture(iceNormalMap, p.zy).xy * 2.0 - 1.0) * iceBumpStrength;
       vec2 ty = (texture(iceNormalMap, p.xz).xy * 2.0 - 1.0) * iceBumpStrength;
       vec2 tz = (texture(iceNormalMap, p.xy).xy * 2.0 - 1.0) * iceBumpStrength;

@@ -1,14 +1,14 @@
 //ICE::Dec
-in float iceFresnelFactor;
+in float iceFresnelFactorVSOutput;
 uniform samplerCube iceEnvironment;
 uniform float iceRefractionRatio;
 uniform vec3 iceTint;
 //ICE::Impl
   {
-    vec3 e = iceEyeVectorWC(icePositionWC);
-    vec3 nFront = normalize(iceNormalWC);
+    vec3 e = iceEyeVectorWC(icePositionWCVSOutput);
+    vec3 nFront = normalize(iceNormalWCVSOutput);
     if (gl_FrontFacing == false) { nFront = -nFront; }
-    float fresnel = iceFresnelFactor;
+    float fresnel = iceFresnelFactorVSOutput;
     //ICEHOOK::SurfaceNormal
     vec3 nRefract = nFront;
     //ICEHOOK::RefractionNormal
@@ -17,5 +17,6 @@ uniform vec3 iceTint;
     gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(fresnel, 0.0, 1.0));
     //ICEHOOK::Glistening
     //ICEHOOK::Debug
+    //ICEHOOK::Edges
   }
   //ICEHOOK::Output

@@ -1,6 +1,6 @@
 //ICE::Dec
 uniform float iceFresnelPower;
-out float iceFresnelFactor;
+out float iceFresnelFactorVSOutput;
 //ICE::Impl
-  iceFresnelFactor = iceFresnel(iceEyeVectorWC(icePositionWC), normalize(iceNormalWC),
+  iceFresnelFactorVSOutput = iceFresnel(iceEyeVectorWC(icePositionWCVSOutput), normalize(iceNormalWCVSOutput),
     iceFresnelPower);

@@ -1,8 +1,8 @@
 //ICE::Dec
-in vec3 icePositionWC;
-in vec3 iceNormalWC;
-in vec3 icePositionMC;   // model coordinates: stable under camera and actor motion
-in vec3 iceNormalModel;
+in vec3 icePositionWCVSOutput;
+in vec3 iceNormalWCVSOutput;
+in vec3 icePositionMCVSOutput;   // model coordinates: stable under camera and actor motion
+in vec3 iceNormalModelVSOutput;
 uniform mat3 iceNormalMCWCMatrix;
 uniform vec3 iceCameraWC;
 uniform vec3 iceViewDirectionWC; // unit direction of projection
@@ -19,7 +19,7 @@ vec3 iceEyeVectorWC(vec3 positionWC)
 // Distance of this fragment in front of the camera along the view direction (-z in view space).
 float iceViewDepth()
 {
-  return dot(icePositionWC - iceCameraWC, iceViewDirectionWC);
+  return dot(icePositionWCVSOutput - iceCameraWC, iceViewDirectionWC);
 }
 
 uniform vec4 iceDepthToWindow; // the camera projection's P22, P23, parallel (0/1), unused

@@ -8,6 +8,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
@@ -28,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 
 namespace
 {
@@ -85,6 +87,11 @@ bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
   }
   iceNormals->SetName(IceNormalArray);
   this->PreparedInput->GetPointData()->AddArray(iceNormals);
+  // The ice has its own colour: the copy drawn holds no scalars (MapScalars maps from it), so VTK
+  // builds no colour buffers; with the input's cell scalars VTK 9.1 drew some triangles as
+  // garbage. The copy's attribute lists are its own (ShallowCopy): the input keeps its scalars.
+  this->PreparedInput->GetPointData()->SetScalars(nullptr);
+  this->PreparedInput->GetCellData()->Initialize();
   this->PreparedValid = true;
   this->InputPrepared();
   return true;
@@ -131,6 +138,18 @@ double* vtkIceWorldSpaceMapper::GetBounds()
 }
 
 //------------------------------------------------------------------------------
+vtkUnsignedCharArray* vtkIceWorldSpaceMapper::MapScalars(
+  vtkDataSet* input, double alpha, int& cellFlag)
+{
+  // Every MapScalars overload of VTK's mappers ends here, most with the raw input.
+  if (input == this->GetInput() && this->PreparedInput)
+  {
+    input = this->PreparedInput;
+  }
+  return this->Superclass::MapScalars(input, alpha, cellFlag);
+}
+
+//------------------------------------------------------------------------------
 void vtkIceWorldSpaceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   // Draw the prepared copy (input plus ice normals) instead of the raw input.
@@ -147,6 +166,33 @@ void vtkIceWorldSpaceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
     texture->Deactivate();
   }
   this->BoundScreenTextures.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vtkShader* gs)
+{
+  // VTK adds a geometry shader for edges (EdgeVisibility) and wide lines; its shader cache then
+  // renames "VSOut" to "GSOut" in the fragment shader. Every ice varying (VTK's convention:
+  // out TYPE iceNameVSOutput in the vertex shader) is copied through it per vertex, as VTK does
+  // for its own.
+  if (!gs || gs->GetSource().empty())
+  {
+    return;
+  }
+  std::string declarations;
+  std::string copies;
+  static const std::regex varying("out\\s+(\\w+)\\s+(ice\\w*)VSOutput\\s*;");
+  for (std::sregex_iterator it(vs.begin(), vs.end(), varying), end; it != end; ++it)
+  {
+    const std::string type = (*it)[1];
+    const std::string name = (*it)[2];
+    declarations += "in " + type + " " + name + "VSOutput[];\nout " + type + " " + name + "GSOutput;\n";
+    copies += name + "GSOutput = " + name + "VSOutput[i];\n";
+  }
+  std::string source = gs->GetSource();
+  vtkIceShaderSections::InsertAfterTag(source, "//VTK::Normal::Dec", declarations);
+  vtkIceShaderSections::InsertAfterTag(source, "//VTK::Normal::Impl", copies);
+  gs->SetSource(source);
 }
 
 //------------------------------------------------------------------------------
@@ -174,6 +220,7 @@ void vtkIceWorldSpaceMapper::ReplaceShaderValues(
     InsertAfterTag(fs, "//VTK::Normal::Dec", Get(vtkIceWorldSpaceFS, "Dec"));
     shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
+    PassThroughGeometryShader(vs, shaders[vtkShader::Geometry]);
   }
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 }

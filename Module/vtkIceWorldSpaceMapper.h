@@ -19,8 +19,10 @@
 #include <string>  // for ReplaceIceShaderValues
 #include <vector>  // for members
 
+class vtkDataSet;
 class vtkPolyData;
 class vtkTextureObject;
+class vtkUnsignedCharArray;
 
 class RENDERINGICE_EXPORT vtkIceWorldSpaceMapper : public vtkOpenGLPolyDataMapper
 {
@@ -55,6 +57,14 @@ protected:
   ~vtkIceWorldSpaceMapper() override;
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Scalars are mapped from the drawn copy of the input, which holds none: the ice has its own
+   * colour. (Mapped from the input, point scalars gave colours to a copy without them, which VTK
+   * then drew as cell colours: garbage.)
+   */
+  using Superclass::MapScalars;
+  vtkUnsignedCharArray* MapScalars(vtkDataSet* input, double alpha, int& cellFlag) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
@@ -78,6 +88,10 @@ protected:
    */
   void BindScreenTexture(
     vtkShaderProgram* program, vtkRenderer* ren, vtkTextureObject* texture, const char* sampler);
+
+  // Adds to the geometry shader VTK uses for edges and wide lines, if any, the copying of every
+  // ice varying declared in `vs` (out TYPE iceNameVSOutput).
+  static void PassThroughGeometryShader(const std::string& vs, vtkShader* gs);
 
   // Whether the helper being compiled or drawn draws surfaces rather than lines or points.
   bool IsSurfaceHelper(const vtkOpenGLHelper* helper) const;

@@ -6,10 +6,10 @@ uniform mat4 iceVBOToModelMatrix; // undoes the VBO shift/scale: true model coor
 uniform vec3 iceCameraWC;
 uniform vec3 iceViewDirectionWC; // unit direction of projection
 uniform int iceParallelProjection;
-out vec3 icePositionWC;
-out vec3 iceNormalWC;
-out vec3 icePositionMC;
-out vec3 iceNormalModel;
+out vec3 icePositionWCVSOutput;
+out vec3 iceNormalWCVSOutput;
+out vec3 icePositionMCVSOutput;
+out vec3 iceNormalModelVSOutput;
 // Unit eye vector e, from the eye to a point: the same direction of projection for every point
 // under parallel projection.
 vec3 iceEyeVectorWC(vec3 positionWC)
@@ -17,7 +17,7 @@ vec3 iceEyeVectorWC(vec3 positionWC)
   return iceParallelProjection != 0 ? iceViewDirectionWC : normalize(positionWC - iceCameraWC);
 }
 //ICE::Impl
-  icePositionWC = (iceMCWCMatrix * vertexMC).xyz;
-  iceNormalWC = iceNormalMCWCMatrix * iceNormalMC;
-  icePositionMC = (iceVBOToModelMatrix * vertexMC).xyz;
-  iceNormalModel = iceNormalMC;
+  icePositionWCVSOutput = (iceMCWCMatrix * vertexMC).xyz;
+  iceNormalWCVSOutput = iceNormalMCWCMatrix * iceNormalMC;
+  icePositionMCVSOutput = (iceVBOToModelMatrix * vertexMC).xyz;
+  iceNormalModelVSOutput = iceNormalMC;
