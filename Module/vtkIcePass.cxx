@@ -81,14 +81,28 @@ vtkStandardNewMacro(vtkIceOverlayStep);
 
 namespace
 {
-// Whether `mapper` reads the depth interval this frame: its cracks and air planes are clipped by
-// it and drawn at the ice's front depth, and the debug views show it. Without any such reader the pass
-// is skipped (two geometry passes less). A new mapper feature that samples the depth interval
-// texture must be added here.
-bool NeedsDepthInterval(vtkIceMapper* mapper)
+// Whether `mapper` reads the depth interval before the scene is drawn: its surface shows it (the
+// depth debug views), or the back-face pass draws its cracks, clipped by it, into the back-face
+// normals (CracksPerturbRefraction). It is then rendered over every ice prop, before the
+// back-face pass.
+bool ReadsDepthIntervalBeforeScene(vtkIceMapper* mapper)
 {
+  return mapper->GetDebugView() == vtkIceMapper::DebugFrontDepth ||
+    mapper->GetDebugView() == vtkIceMapper::DebugBackDepth ||
+    (mapper->GetCracksPerturbRefraction() && mapper->GetNumberOfCracks() > 0);
+}
+
+// Whether the overlays of `mapper` read the depth interval: its cracks and air planes are clipped
+// by it and drawn at the ice's front depth. It is then rendered for that prop alone, right before
+// its overlays, so that no ice clips its interior by another ice's interval. Without any reader
+// the pass is skipped (two geometry passes less). A new feature that samples the depth interval
+// texture must be added to one of these two.
+bool OverlaysReadDepthInterval(vtkIceMapper* mapper)
+{
+  const int view = mapper->GetDebugView();
   return mapper->GetNumberOfCracks() > 0 || mapper->GetNumberOfAirPlanes() > 0 ||
-    mapper->GetDebugView() != vtkIceMapper::DebugOff;
+    view == vtkIceMapper::DebugCracksClipped || view == vtkIceMapper::DebugCracksUnclipped ||
+    view == vtkIceMapper::DebugAir;
 }
 }
 
@@ -182,14 +196,9 @@ void vtkIcePass::Render(const vtkRenderState* s)
       this->CubeMapPass->Render(&iceState);
       this->CubeMapPass->AttachCubeMaps(&iceState);
     }
-    if (std::any_of(iceMappers.begin(), iceMappers.end(), NeedsDepthInterval))
+    if (std::any_of(iceMappers.begin(), iceMappers.end(), ReadsDepthIntervalBeforeScene))
     {
-      this->DepthIntervalPass->Render(&iceState);
-      for (vtkIceMapper* mapper : iceMappers)
-      {
-        mapper->SetDepthIntervalTexture(this->DepthIntervalPass->GetDepthTexture());
-        mapper->SetDepthRange(this->DepthIntervalPass->GetDepthRange());
-      }
+      this->RenderDepthInterval(&iceState);
     }
     this->BackfaceNormalPass->Render(&iceState);
     for (vtkIceMapper* mapper : iceMappers)
@@ -248,10 +257,10 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
   }
   state->vtkglViewport(origin[0], origin[1], size[0], size[1]);
   state->vtkglScissor(origin[0], origin[1], size[0], size[1]);
-  // Air first (blended back to front), then the cracks' highlights added on top. Both show only
-  // inside the ice's projected bounding box (elsewhere the depth interval is empty, or the crack
-  // geometry is already cut to the ice): scissored there, the parts of the planes and sheets that
-  // stick out are never rasterised.
+  // Prop by prop: its own depth interval, then its air (blended back to front), then its cracks'
+  // highlights added on top. Both show only inside the ice's projected bounding box (elsewhere
+  // the depth interval is empty, or the crack geometry is already cut to the ice): scissored
+  // there, the parts of the planes and sheets that stick out are never rasterised.
   const auto scissorToIce = [&](vtkProp* prop, bool unclipped) {
     int covered[4] = { 0, 0, size[0], size[1] };
     if (!unclipped)
@@ -264,15 +273,31 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];
-    scissorToIce(prop, false);
-    vtkIceMapper::GetIceMapperOf(prop)->RenderAir(renderer, static_cast<vtkActor*>(prop));
-  }
-  for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = iceState->GetPropArray()[i];
     vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(prop);
+    if (!OverlaysReadDepthInterval(mapper))
+    {
+      continue;
+    }
+    vtkRenderState propState(renderer);
+    propState.SetPropArrayAndCount(&prop, 1);
+    propState.SetFrameBuffer(s->GetFrameBuffer());
+    this->RenderDepthInterval(&propState);
+    scissorToIce(prop, false);
+    mapper->RenderAir(renderer, static_cast<vtkActor*>(prop));
     scissorToIce(prop, mapper->GetDebugView() == vtkIceMapper::DebugCracksUnclipped);
     mapper->RenderCracks(renderer, static_cast<vtkActor*>(prop), true);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIcePass::RenderDepthInterval(const vtkRenderState* s)
+{
+  this->DepthIntervalPass->Render(s);
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(s->GetPropArray()[i]);
+    mapper->SetDepthIntervalTexture(this->DepthIntervalPass->GetDepthTexture());
+    mapper->SetDepthRange(this->DepthIntervalPass->GetDepthRange());
   }
 }
 

@@ -14,13 +14,15 @@
  * 1. environment: with a vtkIceCubeMapPass set (SetCubeMapPass), each ice prop gets a cube map of
  *    the scene around it (dynamic environment); without one, the renderer's environment texture
  *    is used (static environment),
- * 2. depth interval (vtkIceDepthIntervalPass: front and back depth of the ice, for the cracks),
- *    only when an ice mapper has cracks or a debug view,
+ * 2. depth interval of all the ice (vtkIceDepthIntervalPass: front and back depth), only when an
+ *    ice mapper shows it in a depth debug view or draws cracks into the back-face normals
+ *    (CracksPerturbRefraction),
  * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
  * Right after the opaque geometry (before translucent geometry, when the delegate is the default
- * one; after the delegate otherwise) it draws the ice mappers' air planes (blended back to front)
- * and cracks (highlights added), clipped to the ice: one draw each per ice prop however many
- * planes and cracks it has.
+ * one; after the delegate otherwise) it draws, ice prop by ice prop, the prop's own depth interval
+ * and its air planes (blended back to front) and cracks (highlights added), clipped to that
+ * interval: one draw each per ice prop however many planes and cracks it has, and no ice's
+ * interior shows on another ice.
  *
  * @sa vtkIceMapper vtkIceBackfaceNormalPass
  */
@@ -74,8 +76,9 @@ public:
   vtkGetMacro(NumberOfIceProps, int);
 
   /**
-   * Draws the ice props of `iceState` (their air, then their cracks) over what `s` rendered so
-   * far. Called by the pass itself after the opaque geometry.
+   * Draws the ice props of `iceState` over what `s` rendered so far, one by one: the prop's own
+   * depth interval (so that the interior of one ice is never clipped by another's), its air, then
+   * its cracks. Called by the pass itself after the opaque geometry.
    */
   void RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState);
 
@@ -85,6 +88,9 @@ protected:
 
   // Matches the default delegate's translucent pass to the renderer's depth-peeling setting.
   void ConfigureDefaultDelegate(vtkRenderer* renderer);
+
+  // Renders the depth interval of the props of `s` and hands it to their mappers.
+  void RenderDepthInterval(const vtkRenderState* s);
 
   vtkIceOverlayStep* OverlayStep = nullptr;
 
