@@ -3,6 +3,7 @@
 // map vtkIceCubeMapPass renders of the scene around it (dynamic), and clearly brighter than an
 // environment at 1.0. An 8-bit cube map clamped the sky to 1: 188/255 dynamic against 234
 // static.
+#include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceMapper.h"
@@ -16,7 +17,6 @@
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSkybox.h"
 #include "vtkSphereSource.h"
 #include "vtkTexture.h"
 
@@ -50,10 +50,7 @@ double RenderIce(bool dynamic, float skyValue)
 {
   vtkSmartPointer<vtkTexture> sky = Sky(skyValue);
   vtkNew<vtkRenderer> renderer;
-  renderer->SetEnvironmentTexture(sky);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(sky);
-  renderer->AddActor(skybox);
+  IceScene::AddEnvironment(renderer, sky);
 
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(48);

@@ -6,6 +6,7 @@
 // - Wireframe and points: the ice is drawn as lines and points (iced), not as a filled disk of
 //   garbage: most of the silhouette shows the background.
 // - Point and cell scalars on the input: the ice looks the same as without them.
+#include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
@@ -21,7 +22,6 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSkybox.h"
 #include "vtkSphereSource.h"
 #include "vtkTexture.h"
 
@@ -45,10 +45,7 @@ IceTest::Image Render(bool ice, Input input, const std::function<void(vtkActor*)
   vtkSmartPointer<vtkTexture> environment =
     IceTest::MakeCubeMap(vtkIceCubeMapSource::DirectionTest, 128);
   vtkNew<vtkRenderer> renderer;
-  renderer->SetEnvironmentTexture(environment);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(environment);
-  renderer->AddActor(skybox);
+  IceScene::AddEnvironment(renderer, environment);
 
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(12);
