@@ -2,7 +2,10 @@
 
 #include "vtkIceMapper.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseKey.h"
 #include "vtkLight.h"
@@ -15,6 +18,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
+#include "vtkPointData.h"
 #include "vtkProp3D.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
@@ -33,6 +37,25 @@
 vtkStandardNewMacro(vtkIceCubeMapPass);
 vtkCxxSetObjectMacro(vtkIceCubeMapPass, DelegatePass, vtkRenderPass);
 vtkInformationKeyMacro(vtkIceCubeMapPass, ENVIRONMENT, ObjectBase);
+
+namespace
+{
+// Whether the renderer's environment texture holds floats (an HDR environment, such as
+// vtkIceEnvironmentReader gives for EXR or HDR files): the cube maps then keep values above 1.
+bool HighDynamicRange(vtkRenderer* renderer)
+{
+  vtkTexture* environment = renderer->GetEnvironmentTexture();
+  if (!environment || environment->GetNumberOfInputConnections(0) == 0)
+  {
+    return false;
+  }
+  // The texture would bring its input up to date when it is first drawn; this pass runs first.
+  environment->GetInputAlgorithm(0, 0)->Update();
+  vtkImageData* face = vtkImageData::SafeDownCast(environment->GetInputDataObject(0, 0));
+  vtkDataArray* texels = face ? face->GetPointData()->GetScalars() : nullptr;
+  return texels && (texels->GetDataType() == VTK_FLOAT || texels->GetDataType() == VTK_DOUBLE);
+}
+}
 
 namespace
 {
@@ -156,17 +179,21 @@ public:
     const std::vector<vtkProp*>& scene, const double center[3]);
 
 private:
-  void Allocate(vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map);
+  void Allocate(
+    vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map, bool highDynamicRange);
   void SetupCamera(int face, const double center[3], const std::vector<vtkProp*>& scene,
     vtkCamera* mainCamera);
 };
 
 //------------------------------------------------------------------------------
 void vtkIceCubeMapPass::vtkInternals::Allocate(
-  vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map)
+  vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map, bool highDynamicRange)
 {
   const unsigned int size = static_cast<unsigned int>(pass->FaceSize);
-  if (map.Texture && (map.Texture->GetWidth() != size || map.Texture->GetContext() != window))
+  const int type = highDynamicRange ? VTK_FLOAT : VTK_UNSIGNED_CHAR;
+  if (map.Texture &&
+    (map.Texture->GetWidth() != size || map.Texture->GetContext() != window ||
+      map.Texture->GetVTKDataType() != type))
   {
     map.Texture->ReleaseGraphicsResources(window);
     map.Texture = nullptr;
@@ -180,13 +207,14 @@ void vtkIceCubeMapPass::vtkInternals::Allocate(
     map.Texture->SetWrapS(vtkTextureObject::ClampToEdge);
     map.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
     map.Texture->SetWrapR(vtkTextureObject::ClampToEdge);
-    // Half floats: an HDR environment (and any scene light above 1) reaches the ice as the
-    // static environment texture gives it, instead of clamped to 1 by an 8-bit target.
-    map.Texture->SetInternalFormat(GL_RGBA16F);
+    // Half floats for an HDR environment: its light reaches the ice as the static environment
+    // texture gives it, instead of clamped to 1 by an 8-bit target. 8 bits otherwise: llvmpipe
+    // samples them faster (a float cube map cost about 15 ms a frame in ice-bench's scenes).
+    map.Texture->SetInternalFormat(highDynamicRange ? GL_RGBA16F : GL_RGBA8);
     map.Texture->SetFormat(GL_RGBA);
-    map.Texture->SetDataType(GL_FLOAT);
+    map.Texture->SetDataType(highDynamicRange ? GL_FLOAT : GL_UNSIGNED_BYTE);
     void* noData[6] = { nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
-    map.Texture->CreateCubeFromRaw(size, size, 4, VTK_FLOAT, noData);
+    map.Texture->CreateCubeFromRaw(size, size, 4, type, noData);
     map.Rendered = false;
   }
   if (!this->FrameBuffer || this->FrameBuffer->GetContext() != window)
@@ -252,7 +280,7 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   const double center[3])
 {
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  this->Allocate(pass, window, map);
+  this->Allocate(pass, window, map, HighDynamicRange(renderer));
   const int face = map.NextFace;
   map.NextFace = (map.NextFace + 1) % 6;
   --map.PendingFaces;
