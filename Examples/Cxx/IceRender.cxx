@@ -219,5 +219,6 @@ int main(int argc, char* argv[])
   }
   std::cout << "ice-render: wrote " << options.Output << " (" << options.Width << "x"
             << options.Height << ", model " << options.Model << ", back end " << backend << ")\n";
-  return 0;
+  // Standard output is a file too (ice-render > log on a full disk).
+  return std::cout.flush() ? 0 : Fail("cannot write to standard output", 1);
 }

@@ -256,6 +256,15 @@ def option_cases():
         ("interactive without a display", "interactive|DISPLAY", ["--interactive", "--backend", "x"], no_display),
         ("disk full (a link to /dev/full)", "No space left", ["--out", "full.png", "--static"], None),
     ]
+    # Standard output on a full disk: the picture is written, the exit says the log was not.
+    with open("/dev/full", "w") as full:
+        write("stdout.png", SENTINEL)
+        result = subprocess.run([ICE_RENDER, "--size", "64x48", "--static", "--out", "stdout.png"],
+                                stdout=full, stderr=subprocess.PIPE, timeout=TIME_LIMIT)
+    check("option: standard output on a full disk",
+          result.returncode == 1 and result.stderr.splitlines() ==
+          [b"ice-render: cannot write to standard output"],
+          "exit %s, stderr %r" % (result.returncode, result.stderr[:200]))
     os.makedirs("folder.png", exist_ok=True)
     for name, pattern, args, env in cases:
         expect_error("option: " + name, pattern, ["--size", "64x48", "--out", "sentinel.png"] + args,
