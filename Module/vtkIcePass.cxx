@@ -7,11 +7,13 @@
 #include "vtkIceScreenRegion.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkNew.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkTranslucentPass.h"
 #include "vtkFrameBufferObjectBase.h"
+#include "vtkHardwareSelector.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -166,6 +168,19 @@ vtkIcePass::~vtkIcePass()
 void vtkIcePass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  // Hardware picking and selection (vtkHardwareSelector, vtkPropPicker, the interactor's picks):
+  // a renderer without a pass renders the selection itself, and a pass in its place must do so
+  // through the selector's own entry point. The ice is picked like any prop.
+  if (vtkHardwareSelector* selector = s->GetRenderer()->GetSelector())
+  {
+    // As the renderer does without a pass: the camera (viewport, clear), then the props.
+    vtkRenderer* renderer = s->GetRenderer();
+    renderer->GetActiveCamera()->Render(renderer);
+    this->NumberOfIceProps = 0;
+    this->NumberOfRenderedProps =
+      selector->Render(renderer, s->GetPropArray(), s->GetPropArrayCount());
+    return;
+  }
   if (!this->DelegatePass)
   {
     vtkWarningMacro(<< "No delegate pass: nothing is rendered.");
@@ -184,8 +199,7 @@ void vtkIcePass::Render(const vtkRenderState* s)
   }
   this->NumberOfIceProps = static_cast<int>(iceProps.size());
 
-  // Picking renders ids, not ice: the sub-passes are not needed then.
-  const bool runIcePasses = !iceProps.empty() && !s->GetRenderer()->GetSelector();
+  const bool runIcePasses = !iceProps.empty();
   vtkRenderState iceState(s->GetRenderer());
   iceState.SetPropArrayAndCount(iceProps.data(), static_cast<int>(iceProps.size()));
   iceState.SetFrameBuffer(s->GetFrameBuffer());
