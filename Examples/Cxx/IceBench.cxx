@@ -3,6 +3,7 @@
 // object, interleaved with it round by round, and reported as a ratio to it.
 #include "IceBench.h"
 #include "IceHeadless.h"
+#include "IceModelFile.h"
 #include "IceOutputFile.h"
 #include "IceScene.h"
 
@@ -80,7 +81,8 @@ struct Options
 
 int Fail(const std::string& message, int code)
 {
-  std::cerr << "ice-bench: " << message << "\n";
+  // Arguments and file names are echoed: terminal escapes in them are not passed on.
+  std::cerr << "ice-bench: " << IceModelFile::Printable(message, 2000) << "\n";
   return code;
 }
 

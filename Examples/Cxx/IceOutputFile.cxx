@@ -1,4 +1,5 @@
 #include "IceOutputFile.h"
+#include "IceModelFile.h"
 
 #include "vtkImageData.h"
 #include "vtkImageWriter.h"
@@ -41,9 +42,10 @@ void OnSignal(int signal)
   std::raise(signal);
 }
 
+// Names in messages are made printable: a file name may hold terminal escapes.
 std::string Quote(const fs::path& path)
 {
-  return "'" + path.string() + "'";
+  return "'" + IceModelFile::Printable(path.string()) + "'";
 }
 
 std::string SystemError(int error)
@@ -255,7 +257,7 @@ std::string WriteImage(const std::string& path, vtkImageData* image)
   }
   else
   {
-    return "cannot write '" + path + "': its name must end in .png, .jpg or .jpeg";
+    return "cannot write " + Quote(path) + ": its name must end in .png, .jpg or .jpeg";
   }
   writer->SetInputData(image);
   writer->Write();
@@ -264,7 +266,7 @@ std::string WriteImage(const std::string& path, vtkImageData* image)
     : vtkJPEGWriter::SafeDownCast(writer)->GetResult();
   if (writer->GetErrorCode() != 0 || !bytes || bytes->GetNumberOfValues() == 0)
   {
-    return "cannot encode the image for '" + path + "'";
+    return "cannot encode the image for " + Quote(path);
   }
   return Write(path,
     std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),

@@ -1,5 +1,6 @@
 // ice-render: renders a model as ice in front of an environment, to a PNG or in a window.
 #include "IceHeadless.h"
+#include "IceModelFile.h"
 #include "IceOutputFile.h"
 #include "IceScene.h"
 
@@ -52,7 +53,8 @@ struct Options
 
 int Fail(const std::string& message, int code)
 {
-  std::cerr << "ice-render: " << message << "\n";
+  // Arguments and file names are echoed: terminal escapes in them are not passed on.
+  std::cerr << "ice-render: " << IceModelFile::Printable(message, 2000) << "\n";
   return code;
 }
 

@@ -251,6 +251,7 @@ def option_cases():
         ("output is a folder", "it is a folder", ["--out", "folder.png"], None),
         ("output folder missing", "no folder", ["--out", "missing/ice.png"], None),
         ("unknown back end", "bad --backend", ["--backend", "bogus"], None),
+        ("argument with terminal escapes", "unknown argument", ["--\x1b]0;owned\x07"], None),
         ("unknown back end in VTKICE_BACKEND", "VTKICE_BACKEND", [], bad_backend),
         ("x back end without a display", "DISPLAY", ["--backend", "x"], no_display),
         ("interactive without a display", "interactive|DISPLAY", ["--interactive", "--backend", "x"], no_display),
@@ -324,6 +325,8 @@ def bench_cases():
                  ["--csv", "missing/b.csv"], program=ICE_BENCH, out="sentinel.csv")
     expect_error("ice-bench: plot of an unknown image type", "must end in .png",
                  ["--plot", "plot.gif"], program=ICE_BENCH, out="sentinel.csv")
+    expect_error("ice-bench: CSV name with terminal escapes", "no folder",
+                 ["--csv", "\x1b[2Jmissing/b.csv"], program=ICE_BENCH, out="sentinel.csv")
     expect_error("ice-bench: CSV on a full disk", "No space left",
                  quick + ["--csv", "full.csv"], program=ICE_BENCH, out="sentinel.csv")
     # Interrupted: no CSV appears where there was none, an existing one stays as it was.
