@@ -23,6 +23,7 @@
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
 
@@ -185,6 +186,14 @@ void vtkIcePass::Render(const vtkRenderState* s)
   {
     vtkWarningMacro(<< "No delegate pass: nothing is rendered.");
     return;
+  }
+  // Only the OpenGL camera's own Render switches its stereo projection on or off (VTK's camera
+  // pass does not): a window in stereo drew both eyes from the middle. It also sets the viewport
+  // and clears, which the delegate does again; that happens only when stereo is switched.
+  vtkRenderer* renderer = s->GetRenderer();
+  if (renderer->GetActiveCamera()->GetStereo() != renderer->GetRenderWindow()->GetStereoRender())
+  {
+    renderer->GetActiveCamera()->Render(renderer);
   }
 
   std::vector<vtkProp*> iceProps;
