@@ -4,18 +4,15 @@
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceMapper.h"
+#include "vtkIceRendererSteps.h"
 #include "vtkIceScreenRegion.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkDualDepthPeelingPass.h"
 #include "vtkNew.h"
-#include "vtkOrderIndependentTranslucentPass.h"
-#include "vtkTranslucentPass.h"
 #include "vtkFrameBufferObjectBase.h"
 #include "vtkHardwareSelector.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
@@ -30,33 +27,6 @@
 #include <algorithm>
 #include <vector>
 
-namespace
-{
-// VTK 9.1's vtkOrderIndependentTranslucentPass creates its final blend (a vtkOpenGLQuadHelper
-// with a vertex array object) on first use and deletes it only in ReleaseGraphicsResources, not
-// in its destructor: a pass deleted without that call leaks the helper and its vertex array.
-// vtkIcePass owns one, and applications drop passes without releasing them (vtkRenderer::SetPass
-// does not release the old pass either), so the one vtkIcePass uses deletes it when it dies.
-class vtkIceOrderIndependentTranslucentPass : public vtkOrderIndependentTranslucentPass
-{
-public:
-  static vtkIceOrderIndependentTranslucentPass* New();
-  vtkTypeMacro(vtkIceOrderIndependentTranslucentPass, vtkOrderIndependentTranslucentPass);
-
-protected:
-  vtkIceOrderIndependentTranslucentPass() = default;
-  ~vtkIceOrderIndependentTranslucentPass() override
-  {
-    delete this->FinalBlend;
-    this->FinalBlend = nullptr;
-  }
-
-private:
-  vtkIceOrderIndependentTranslucentPass(const vtkIceOrderIndependentTranslucentPass&) = delete;
-  void operator=(const vtkIceOrderIndependentTranslucentPass&) = delete;
-};
-vtkStandardNewMacro(vtkIceOrderIndependentTranslucentPass);
-}
 
 vtkStandardNewMacro(vtkIcePass);
 vtkCxxSetObjectMacro(vtkIcePass, DelegatePass, vtkRenderPass);
@@ -112,44 +82,28 @@ bool OverlaysReadDepthInterval(vtkIceMapper* mapper)
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
 {
+  // The steps of the renderer's own rendering, with its settings (vtkIceRendererSteps.h), and
+  // the ice's air and cracks right after the opaque geometry.
+  this->OpaqueStep = vtkIceOpaqueStep::New();
+  this->TranslucentStep = vtkIceTranslucentStep::New();
+  this->VolumeStep = vtkIceVolumeStep::New();
+  this->VolumeStep->Translucent = this->TranslucentStep;
+  this->OverlayStep = vtkIceOverlayStep::New();
+  this->OverlayStep->Owner = this;
   vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
   this->DefaultDelegate = steps;
   this->SetDelegatePass(this->DefaultDelegate);
-  this->OverlayStep = vtkIceOverlayStep::New();
-  this->OverlayStep->Owner = this;
   vtkNew<vtkSequencePass> opaqueThenOverlays;
   vtkNew<vtkRenderPassCollection> opaqueSteps;
-  opaqueSteps->AddItem(steps->GetOpaquePass());
+  opaqueSteps->AddItem(this->OpaqueStep);
   opaqueSteps->AddItem(this->OverlayStep);
   opaqueThenOverlays->SetPasses(opaqueSteps);
   steps->SetOpaquePass(opaqueThenOverlays);
-
-  vtkNew<vtkTranslucentPass> translucent;
-  vtkOrderIndependentTranslucentPass* oit = vtkIceOrderIndependentTranslucentPass::New();
-  oit->SetTranslucentPass(translucent);
-  this->OrderIndependentTranslucency = oit;
-  vtkDualDepthPeelingPass* peeling = vtkDualDepthPeelingPass::New();
-  peeling->SetTranslucentPass(translucent);
-  this->DepthPeeling = peeling;
+  steps->SetTranslucentPass(this->TranslucentStep);
+  steps->SetVolumetricPass(this->VolumeStep);
 
   this->BackfaceNormalPass = vtkIceBackfaceNormalPass::New();
   this->DepthIntervalPass = vtkIceDepthIntervalPass::New();
-}
-
-//------------------------------------------------------------------------------
-void vtkIcePass::ConfigureDefaultDelegate(vtkRenderer* renderer)
-{
-  if (this->DelegatePass != this->DefaultDelegate)
-  {
-    return;
-  }
-  vtkRenderPass* translucent =
-    renderer->GetUseDepthPeeling() ? this->DepthPeeling : this->OrderIndependentTranslucency;
-  vtkRenderStepsPass* steps = static_cast<vtkRenderStepsPass*>(this->DefaultDelegate);
-  if (steps->GetTranslucentPass() != translucent)
-  {
-    steps->SetTranslucentPass(translucent);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -159,8 +113,9 @@ vtkIcePass::~vtkIcePass()
   this->SetCubeMapPass(nullptr);
   this->DefaultDelegate->Delete();
   this->OverlayStep->Delete();
-  this->OrderIndependentTranslucency->Delete();
-  this->DepthPeeling->Delete();
+  this->OpaqueStep->Delete();
+  this->TranslucentStep->Delete();
+  this->VolumeStep->Delete();
   this->BackfaceNormalPass->Delete();
   this->DepthIntervalPass->Delete();
 }
@@ -234,7 +189,6 @@ void vtkIcePass::Render(const vtkRenderState* s)
   // them over its finished frame.
   const bool overlaysInDelegate = this->DelegatePass == this->DefaultDelegate;
   this->OverlayStep->IceState = runIcePasses && overlaysInDelegate ? &iceState : nullptr;
-  this->ConfigureDefaultDelegate(s->GetRenderer());
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->OverlayStep->IceState = nullptr;
@@ -334,7 +288,9 @@ void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
     this->CubeMapPass->ReleaseGraphicsResources(w);
   }
   for (vtkRenderPass* pass : { this->DelegatePass, this->DefaultDelegate,
-         this->OrderIndependentTranslucency, this->DepthPeeling })
+         static_cast<vtkRenderPass*>(this->OpaqueStep),
+         static_cast<vtkRenderPass*>(this->TranslucentStep),
+         static_cast<vtkRenderPass*>(this->VolumeStep) })
   {
     if (pass)
     {

@@ -5,10 +5,12 @@
  * Set it on a renderer (`renderer->SetPass(icePass)`). Each frame it finds the visible props whose
  * mapper is a vtkIceMapper, runs the ice sub-passes for them, hands their textures to the ice
  * mappers, and then renders the whole scene with its delegate pass (by default a
- * vtkRenderStepsPass set up like the renderer's own default rendering: order-independent
- * translucency, or dual depth peeling when the renderer's UseDepthPeeling is on). A frame without
- * ice is exactly the delegate's frame, and with the default delegate pixel for pixel the frame
- * the renderer draws without any pass.
+ * vtkRenderStepsPass whose steps follow the renderer's own settings every frame: hidden line
+ * removal, SSAO, order-independent translucency or dual depth peeling with the renderer's number
+ * of peels, occlusion ratio and volumes, FXAA). A frame without ice is exactly the delegate's
+ * frame, and with the default delegate pixel for pixel the frame the renderer draws without any
+ * pass. Hardware selection is rendered through the renderer's vtkHardwareSelector, as without a
+ * pass, and the camera's stereo projection follows the window.
  *
  * Sub-passes, in the order they run before the delegate:
  * 1. environment: with a vtkIceCubeMapPass set (SetCubeMapPass), each ice prop gets a cube map of
@@ -35,7 +37,10 @@
 class vtkIceBackfaceNormalPass;
 class vtkIceCubeMapPass;
 class vtkIceDepthIntervalPass;
+class vtkIceOpaqueStep;
 class vtkIceOverlayStep;
+class vtkIceTranslucentStep;
+class vtkIceVolumeStep;
 
 class RENDERINGICE_EXPORT vtkIcePass : public vtkRenderPass
 {
@@ -86,8 +91,6 @@ protected:
   vtkIcePass();
   ~vtkIcePass() override;
 
-  // Matches the default delegate's translucent pass to the renderer's depth-peeling setting.
-  void ConfigureDefaultDelegate(vtkRenderer* renderer);
 
   // Renders the depth interval of the props of `s` and hands it to their mappers.
   void RenderDepthInterval(const vtkRenderState* s);
@@ -96,8 +99,9 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkRenderPass* DefaultDelegate = nullptr;
-  vtkRenderPass* OrderIndependentTranslucency = nullptr;
-  vtkRenderPass* DepthPeeling = nullptr;
+  vtkIceOpaqueStep* OpaqueStep = nullptr;
+  vtkIceTranslucentStep* TranslucentStep = nullptr;
+  vtkIceVolumeStep* VolumeStep = nullptr;
   vtkIceBackfaceNormalPass* BackfaceNormalPass = nullptr;
   vtkIceCubeMapPass* CubeMapPass = nullptr;
   vtkIceDepthIntervalPass* DepthIntervalPass = nullptr;
