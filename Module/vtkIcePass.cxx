@@ -16,6 +16,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
@@ -54,6 +55,19 @@ vtkStandardNewMacro(vtkIceOverlayStep);
 
 namespace
 {
+// The renderer's pick list during vtkRenderer::PickPropFrom (vtkViewport::PickFromProps, which
+// has no getter): a pointer to the protected member, taken in a derived class's scope, applied to
+// any renderer.
+struct vtkIcePickListAccess : vtkRenderer
+{
+  static vtkPropCollection* vtkViewport::*Member() { return &vtkIcePickListAccess::PickFromProps; }
+};
+
+vtkPropCollection* PickFromProps(vtkRenderer* renderer)
+{
+  return renderer->*vtkIcePickListAccess::Member();
+}
+
 // Whether `mapper` reads the depth interval before the scene is drawn: its surface shows it (the
 // depth debug views), or the back-face pass draws its cracks, clipped by it, into the back-face
 // normals (CracksPerturbRefraction). It is then rendered over every ice prop, before the
@@ -129,12 +143,27 @@ void vtkIcePass::Render(const vtkRenderState* s)
   // through the selector's own entry point. The ice is picked like any prop.
   if (vtkHardwareSelector* selector = s->GetRenderer()->GetSelector())
   {
-    // As the renderer does without a pass: the camera (viewport, clear), then the props.
+    // As the renderer does without a pass: the camera (viewport, clear), then the props, or only
+    // the visible ones of a pick list (vtkRenderer::PickPropFrom, vtkPicker's PickFromList).
     vtkRenderer* renderer = s->GetRenderer();
     renderer->GetActiveCamera()->Render(renderer);
     this->NumberOfIceProps = 0;
+    std::vector<vtkProp*> props(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+    if (vtkPropCollection* pickFrom = PickFromProps(renderer))
+    {
+      props.clear();
+      vtkCollectionSimpleIterator it;
+      pickFrom->InitTraversal(it);
+      while (vtkProp* prop = pickFrom->GetNextProp(it))
+      {
+        if (prop->GetVisibility())
+        {
+          props.push_back(prop);
+        }
+      }
+    }
     this->NumberOfRenderedProps =
-      selector->Render(renderer, s->GetPropArray(), s->GetPropArrayCount());
+      props.empty() ? 0 : selector->Render(renderer, props.data(), static_cast<int>(props.size()));
     return;
   }
   if (!this->DelegatePass)
