@@ -1,6 +1,7 @@
-// Stereo with vtkIcePass set before the first render: a red-blue stereo window without ice draws
+// Stereo with vtkIcePass: set before the first render, a red-blue stereo window without ice draws
 // pixel for pixel what it draws without the pass (it used to equal StereoRenderOff: both eyes
-// from the middle), and with ice the two eyes differ (the ice is drawn for each eye).
+// from the middle); switched on after the first render and off again, it follows; and with ice
+// the two eyes differ (the ice is drawn for each eye).
 #include "IceTestUtilities.h"
 #include "vtkIcePass.h"
 #include "vtkIceMapper.h"
@@ -19,10 +20,13 @@
 
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
-IceTest::Image Render(bool withPass, bool stereo, bool ice)
+// Renders one frame per entry of `stereoFrames` (the window's stereo setting for it) and returns
+// the last one.
+IceTest::Image Render(bool withPass, const std::vector<bool>& stereoFrames, bool ice)
 {
   vtkNew<vtkRenderer> renderer;
   vtkSmartPointer<vtkTexture> environment =
@@ -52,13 +56,16 @@ IceTest::Image Render(bool withPass, bool stereo, bool ice)
   window->SetSize(160, 120);
   window->SetOffScreenRendering(1);
   window->SetStereoTypeToRedBlue();
-  window->SetStereoRender(stereo);
   window->AddRenderer(renderer);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, 0.5, 4.0);
   camera->SetEyeAngle(6.0);
   renderer->ResetCameraClippingRange();
-  window->Render();
+  for (const bool stereo : stereoFrames)
+  {
+    window->SetStereoRender(stereo);
+    window->Render();
+  }
   return IceTest::Capture(window);
 }
 
@@ -81,16 +88,22 @@ bool Check(bool ok, const std::string& message)
 
 int TestIcePassStereo(int, char*[])
 {
-  const IceTest::Image mono = Render(false, false, false);
-  const IceTest::Image plain = Render(false, true, false);
-  const IceTest::Image withPass = Render(true, true, false);
+  const IceTest::Image mono = Render(false, { false }, false);
+  const IceTest::Image plain = Render(false, { true }, false);
+  const IceTest::Image withPass = Render(true, { true }, false);
   bool ok = Check(Differing(plain, mono) > 500,
     "red-blue stereo differs from mono on " + std::to_string(Differing(plain, mono)) + " pixels");
   ok = Check(Differing(withPass, plain) == 0,
          "with vtkIcePass: " + std::to_string(Differing(withPass, plain)) +
            " pixels differ from stereo without the pass") && ok;
-  const IceTest::Image iceMono = Render(true, false, true);
-  const IceTest::Image iceStereo = Render(true, true, true);
+  const IceTest::Image switchedOn = Render(true, { false, true }, false);
+  const IceTest::Image switchedOff = Render(true, { false, true, false }, false);
+  ok = Check(Differing(switchedOn, plain) == 0 && Differing(switchedOff, mono) == 0,
+         "stereo switched on after the first render, and off again: " +
+           std::to_string(Differing(switchedOn, plain)) + " and " +
+           std::to_string(Differing(switchedOff, mono)) + " pixels differ without the pass") && ok;
+  const IceTest::Image iceMono = Render(true, { false }, true);
+  const IceTest::Image iceStereo = Render(true, { true }, true);
   ok = Check(Differing(iceStereo, iceMono) > 500,
          "ice in red-blue stereo differs from mono on " +
            std::to_string(Differing(iceStereo, iceMono)) + " pixels") && ok;
