@@ -1,6 +1,7 @@
 // Hardware picking and selection with vtkIcePass: a cone (plain VTK) and an ice sphere. With the
 // pass, vtkPropPicker picks the same prop under each of a grid of pixels as without it (the ice
-// included), and vtkHardwareSelector over the whole viewport finds the same props and the same
+// included), vtkRenderedAreaPicker finds the same props in each half of the window, a pick list
+// is honoured, and vtkHardwareSelector over the whole viewport finds the same props and the same
 // number of cells. Without the pass taking over the selection, nothing was picked.
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
@@ -13,7 +14,9 @@
 #include "vtkHardwareSelector.h"
 #include "vtkNew.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProp3DCollection.h"
 #include "vtkPropPicker.h"
+#include "vtkRenderedAreaPicker.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSelection.h"
@@ -82,6 +85,25 @@ struct Scene
     }
     return picked;
   }
+  // Props vtkRenderedAreaPicker finds in the left and right halves (bit 1 cone, bit 2 ice).
+  std::vector<int> AreaPicks()
+  {
+    std::vector<int> found;
+    vtkNew<vtkRenderedAreaPicker> picker;
+    for (int half = 0; half < 2; ++half)
+    {
+      picker->AreaPick(100 * half, 0, 100 * half + 99, 119, this->Renderer);
+      int bits = 0;
+      vtkProp3DCollection* props = picker->GetProp3Ds();
+      props->InitTraversal();
+      while (vtkProp3D* prop = props->GetNextProp3D())
+      {
+        bits |= prop == this->Cone ? 1 : prop == this->Ice ? 2 : 4;
+      }
+      found.push_back(bits);
+    }
+    return found;
+  }
   // Cells selected over the whole viewport, by prop (1 cone, 2 ice).
   std::map<int, vtkIdType> SelectAll()
   {
@@ -146,6 +168,13 @@ int TestIcePassPicking(int, char*[])
   const bool selected = expectedCells.size() == 2 && cells == expectedCells;
   std::cout << (selected ? "ok   " : "FAIL ") << "vtkHardwareSelector over the viewport: without the pass "
             << Describe(expectedCells) << "with it " << Describe(cells) << "\n";
+  const std::vector<int> expectedAreas = plain.AreaPicks();
+  const std::vector<int> areas = withPass.AreaPicks();
+  const bool areaOk = expectedAreas == std::vector<int>{ 1, 2 } && areas == expectedAreas;
+  std::cout << (areaOk ? "ok   " : "FAIL ") << "vtkRenderedAreaPicker, left and right halves: "
+            << areas[0] << ", " << areas[1] << " with vtkIcePass (1 cone, 2 ice; without it "
+            << expectedAreas[0] << ", " << expectedAreas[1] << ")\n";
+  ok = areaOk && ok;
   // Last: a pick list stays on the renderer after the pick (VTK 9.1).
   const std::vector<int> expectedCone = plain.PickGrid(true);
   const std::vector<int> pickedCone = withPass.PickGrid(true);
