@@ -1,7 +1,8 @@
 // Varied VTK scenes without ice render pixel for pixel the same with vtkIcePass set on every
-// renderer as without it: translucency (order-independent and depth peeling), 2D overlays, two
-// viewports and a second layer, and a volume behind a translucent surface with depth peeling for
-// volumes (the surface veils the volume only when the volume is peeled with it).
+// renderer as without it: translucency (order-independent and depth peeling), 2D overlays, a
+// second layer (opaque), and a volume behind a translucent surface with and without depth
+// peeling for volumes (which changes the picture). Each is first checked to render the same
+// twice without the pass, so that a difference is the pass's.
 #include "IceTestUtilities.h"
 #include "vtkIcePass.h"
 
@@ -143,6 +144,24 @@ int TestIcePassScenes(int, char*[])
     };
   };
   const std::vector<std::pair<std::string, Builder>> scenes = {
+    { "a second layer over an opaque scene",
+      [](vtkRenderWindow* window, std::vector<vtkSmartPointer<vtkRenderer>>& r) {
+        // Opaque only: with translucent geometry under the layer, and with two viewports (even
+        // opaque ones), VTK 9.1 itself rendered differently from one run to the next in this
+        // program (about 2 800 pixels, without any pass; each scene is checked for that below).
+        // Two renderers in one window are compared half by half in TestIcePassTwoIce.
+        window->SetNumberOfLayers(2);
+        auto base = vtkSmartPointer<vtkRenderer>::New();
+        vtkNew<vtkSphereSource> sphere;
+        base->AddActor(Surface(sphere, 0.0, 0.0, Red, 1.0));
+        r.push_back(base);
+        auto layer = vtkSmartPointer<vtkRenderer>::New();
+        layer->SetLayer(1);
+        layer->SetViewport(0.3, 0.3, 0.7, 0.7);
+        vtkNew<vtkConeSource> cone;
+        layer->AddActor(Surface(cone, 0.0, 0.0, Blue, 1.0));
+        r.push_back(layer);
+      } },
     { "translucency, order-independent",
       [](vtkRenderWindow*, std::vector<vtkSmartPointer<vtkRenderer>>& r) { Translucent(r, false); } },
     { "translucency, depth peeling",
@@ -161,20 +180,6 @@ int TestIcePassScenes(int, char*[])
         overlay->GetProperty()->SetOpacity(0.6);
         r[0]->AddActor2D(overlay);
       } },
-    { "two viewports and a layer",
-      [](vtkRenderWindow* window, std::vector<vtkSmartPointer<vtkRenderer>>& r) {
-        window->SetNumberOfLayers(2);
-        Translucent(r, false);
-        Translucent(r, true);
-        r[0]->SetViewport(0.0, 0.0, 0.5, 1.0);
-        r[1]->SetViewport(0.5, 0.0, 1.0, 1.0);
-        auto layer = vtkSmartPointer<vtkRenderer>::New();
-        layer->SetLayer(1);
-        layer->SetViewport(0.3, 0.3, 0.7, 0.7);
-        vtkNew<vtkConeSource> cone;
-        layer->AddActor(Surface(cone, 0.0, 0.0, Blue, 1.0));
-        r.push_back(layer);
-      } },
     { "a volume behind a translucent sphere", volumeScene(false) },
     { "a volume behind a translucent sphere, depth peeling for volumes", volumeScene(true) },
   };
@@ -182,11 +187,21 @@ int TestIcePassScenes(int, char*[])
   for (const auto& scene : scenes)
   {
     const IceTest::Image plain = Render(scene.second, false);
+    const IceTest::Image again = Render(scene.second, false);
     const IceTest::Image withPass = Render(scene.second, true);
     size_t differing = 0;
+    size_t unstable = 0;
     for (size_t p = 0; p < plain.RGB.size() / 3; ++p)
     {
       differing += IceTest::PixelDifference(&plain.RGB[3 * p], &withPass.RGB[3 * p]) > 0 ? 1 : 0;
+      unstable += IceTest::PixelDifference(&plain.RGB[3 * p], &again.RGB[3 * p]) > 0 ? 1 : 0;
+    }
+    if (unstable > 0)
+    {
+      std::cout << "FAIL " << scene.first << ": " << unstable
+                << " pixels differ between two renders without the pass\n";
+      ok = false;
+      continue;
     }
     std::cout << (differing == 0 ? "ok   " : "FAIL ") << scene.first << ": " << differing
               << " pixels differ with vtkIcePass\n";
