@@ -174,9 +174,10 @@ public:
   vtkNew<vtkTransform> LightTransform;
   bool UpdateRequested = false;
 
-  // Renders the next pending face of `map` from `center`.
+  // Renders the next pending face of `map` from `center`, into half floats when
+  // `highDynamicRange`.
   void RenderFace(vtkIceCubeMapPass* pass, vtkOpenGLRenderer* renderer, CubeMap& map,
-    const std::vector<vtkProp*>& scene, const double center[3]);
+    const std::vector<vtkProp*>& scene, const double center[3], bool highDynamicRange);
 
 private:
   void Allocate(
@@ -277,10 +278,10 @@ void vtkIceCubeMapPass::vtkInternals::SetupCamera(
 //------------------------------------------------------------------------------
 void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   vtkOpenGLRenderer* renderer, CubeMap& map, const std::vector<vtkProp*>& scene,
-  const double center[3])
+  const double center[3], bool highDynamicRange)
 {
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  this->Allocate(pass, window, map, HighDynamicRange(renderer));
+  this->Allocate(pass, window, map, highDynamicRange);
   const int face = map.NextFace;
   map.NextFace = (map.NextFace + 1) % 6;
   --map.PendingFaces;
@@ -384,6 +385,9 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
   }
 
   const std::vector<vtkProp*> scene = SceneProps(renderer);
+  // Once a frame: the texel type follows the environment texture's.
+  const bool highDynamicRange = HighDynamicRange(renderer);
+  const int texelType = highDynamicRange ? VTK_FLOAT : VTK_UNSIGNED_CHAR;
   const bool updateRequested = this->Internals->UpdateRequested;
   this->Internals->UpdateRequested = false;
   for (vtkProp* iceProp : iceProps)
@@ -401,8 +405,11 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
     const size_t signature = SceneSignature(renderer, scene, center, this->FaceSize);
     auto inserted = this->Internals->Maps.emplace(iceProp, vtkInternals::CubeMap());
     vtkInternals::CubeMap& map = inserted.first->second;
-    const bool resized = map.Texture && map.Texture->GetWidth() != static_cast<unsigned int>(this->FaceSize);
-    const bool restart = inserted.second || resized || updateRequested ||
+    // A new size or texel type reallocates the texture: all six faces are rendered again.
+    const bool reallocated = map.Texture &&
+      (map.Texture->GetWidth() != static_cast<unsigned int>(this->FaceSize) ||
+        map.Texture->GetVTKDataType() != texelType);
+    const bool restart = inserted.second || reallocated || updateRequested ||
       (this->UpdateMode == EveryFrame && map.PendingFaces == 0) ||
       (this->UpdateMode == OnChange && signature != map.Signature);
     if (restart)
@@ -413,7 +420,7 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
     const int faces = std::min(map.PendingFaces, this->FacesPerFrame);
     for (int f = 0; f < faces; ++f)
     {
-      this->Internals->RenderFace(this, renderer, map, scene, center);
+      this->Internals->RenderFace(this, renderer, map, scene, center, highDynamicRange);
     }
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
