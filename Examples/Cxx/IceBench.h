@@ -1,13 +1,24 @@
-// ice-bench: the measured configurations and their results, shared by the measuring program
-// (IceBench.cxx) and the plot (IceBenchPlot.cxx).
+// ice-bench: the measured configurations and their results, shared by the measuring program and
+// the plot (IceBenchPlot.cxx), and the program's parts, one job a file: IceBenchOptions.cxx,
+// IceBenchGroups.cxx, IceBenchScene.cxx (IceBenchScene.h), IceBenchMeasure.cxx,
+// IceBenchMachine.cxx, IceBenchTargets.cxx, IceBenchReport.cxx and main in IceBench.cxx.
 #ifndef IceBench_h
 #define IceBench_h
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
+class vtkPolyData;
+class vtkRenderWindow;
+class vtkTexture;
+
 namespace IceBench
 {
+// The window every configuration is timed in.
+constexpr int Width = 1024;
+constexpr int Height = 768;
+
 enum class Material
 {
   Plain,    // plain VTK: a vtkPolyDataMapper, Phong shading (the baseline)
@@ -78,6 +89,79 @@ struct Target
   bool Measured = false;
 };
 
+struct Options
+{
+  bool Quick = false;
+  int Frames = -1;
+  std::string Csv = "ice-bench.csv";
+  std::string Plot;
+  std::string Markdown;
+  std::string Only;
+  std::string Backend;
+  int MultiSamples = -1;
+};
+
+struct Schedule
+{
+  int WarmUp = 3;   // untimed frames per configuration before the first round
+  int Rounds = 5;   // every configuration of a group takes its turn once per round
+  int PerRound = 4; // timed frames per turn, after one untimed frame
+  // When positive, a turn of a slow configuration takes about this many milliseconds: fewer
+  // timed frames (at least one per round), no untimed frame after the switch for frames over
+  // SlowFrame ms, and two warm-up frames. Keeps the full run within minutes.
+  double TurnBudget = 0.0;
+  double SlowFrame = 100.0;
+};
+
+struct Machine
+{
+  std::string Renderer;
+  std::string GLVersion;
+  std::string CPU;
+  unsigned int Threads = 0;
+  std::string Backend;
+  std::string VTK;
+  int MultiSamples = 0;
+};
+
+// IceBenchOptions.cxx
+// Prints "ice-bench: `message`" to standard error and returns `code`.
+int Fail(const std::string& message, int code);
+// Returns -1 when the arguments are fine, otherwise the exit code.
+int Parse(int argc, char* argv[], Options& options);
+
+// IceBenchGroups.cxx
+// The groups of a run: all, or those of --quick (shortened), whose id contains `only`.
+std::vector<Group> SelectGroups(bool quick, const std::string& only);
+
+// IceBenchMeasure.cxx
+Schedule ChooseSchedule(bool quick, int frames);
+// Builds a scene per configuration in `window`, times them interleaved, fills in the results and
+// g.Seconds, and takes the scenes out of the window again.
+void RunGroup(Group& g, vtkRenderWindow* window, vtkPolyData* object, vtkTexture* environment,
+  const Schedule& schedule);
+
+// IceBenchMachine.cxx
+// What is known before a window renders: the back end, the CPU, VTK.
+Machine DescribeMachine();
+// The GL renderer, its version and the multisampling of `window`, which has rendered.
+void DescribeContext(vtkRenderWindow* window, Machine& machine);
+
+// IceBenchTargets.cxx (issue 8, item 4)
+std::vector<Target> EvaluateTargets(const std::vector<Group>& groups);
+
+// IceBenchReport.cxx
+std::string Fixed(double value, int digits);
+// The first lines of a run: the machine and the schedule.
+void PrintRun(std::ostream& out, const Machine& machine, const Schedule& schedule);
+void PrintGroup(std::ostream& out, const Group& g);
+void PrintTargets(std::ostream& out, const std::vector<Target>& targets);
+// Writes the CSV, Markdown and plot files that `options` names, each reported on standard output;
+// empty on success, else the error.
+std::string WriteFiles(const Options& options, const std::vector<Group>& groups,
+  const std::vector<Target>& targets, const Machine& machine, int frames);
+
+// IceBenchPlot.cxx
 // Writes a PNG with the ratios and scaling curves of `groups`; empty on success, else the error.
 std::string WritePlot(
   const std::vector<Group>& groups, const std::string& path, const std::string& subtitle);

@@ -1,0 +1,160 @@
+// ice-bench's groups: which configurations are timed against plain VTK, on which object and scene.
+#include "IceBench.h"
+
+#include "vtkIceCubeMapPass.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+using IceBench::Configuration;
+using IceBench::Group;
+using IceBench::Material;
+
+Configuration Plain()
+{
+  Configuration c;
+  c.Label = "plain VTK (Phong)";
+  return c;
+}
+
+Configuration Ice(const std::string& label, Material material, int cracks = 0)
+{
+  Configuration c;
+  c.Label = label;
+  c.Ice = material;
+  c.Cracks = material == Material::CracksAir ? 2 : cracks;
+  c.AirPlanes = material == Material::CracksAir ? 19 : 0;
+  return c;
+}
+
+Configuration Dynamic(const std::string& label, int mode, int faceSize = 512, int facesPerFrame = 6,
+  bool culling = true, bool moving = false)
+{
+  Configuration c = Ice(label, Material::TwoSided);
+  c.CubeMap = true;
+  c.UpdateMode = mode;
+  c.FaceSize = faceSize;
+  c.FacesPerFrame = facesPerFrame;
+  c.Culling = culling;
+  c.Moving = moving;
+  return c;
+}
+
+std::vector<Group> DefineGroups()
+{
+  std::vector<Group> groups;
+  const char* const objects[3] = { "sphere", "block", "teapot" };
+  for (double coverage : { 0.2, 1.0 })
+  {
+    for (const char* object : objects)
+    {
+      Group g;
+      const bool fifth = coverage < 0.5;
+      g.Id = std::string(fifth ? "objects-" : "fullscreen-") + object;
+      g.Title = std::string(object) + ", static environment, ice " +
+        (fifth ? "about 1/5 of the screen" : "covering the screen");
+      g.Object = object;
+      g.Coverage = coverage;
+      g.Quick = fifth && std::string(object) == "teapot";
+      g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
+        Ice("two-sided ice", Material::TwoSided),
+        Ice("two-sided + cracks + air", Material::CracksAir) };
+      groups.push_back(g);
+    }
+  }
+
+  Group dynamic;
+  dynamic.Id = "dynamic-teapot";
+  dynamic.Title = "teapot in the landscape, ice about 1/5 of the screen";
+  dynamic.Object = "teapot";
+  dynamic.Landscape = true;
+  dynamic.Quick = true;
+  const int every = vtkIceCubeMapPass::EveryFrame;
+  const int onChange = vtkIceCubeMapPass::OnChange;
+  dynamic.Configurations = { Plain(), Ice("two-sided, static environment", Material::TwoSided),
+    Dynamic("cube map every frame, 512", every),
+    Dynamic("cube map every frame, 512, no culling", every, 512, 6, false),
+    Dynamic("cube map every frame, 256", every, 256),
+    Dynamic("cube map every frame, 128", every, 128),
+    Dynamic("cube map on change, still scene", onChange),
+    Dynamic("cube map on change, ball moving", onChange, 512, 6, true, true),
+    Dynamic("cube map 1 face per frame, 512", every, 512, 1),
+    Dynamic("cube map 2 faces per frame, 512", every, 512, 2),
+    Dynamic("cube map 3 faces per frame, 512", every, 512, 3) };
+  groups.push_back(dynamic);
+
+  Group cracks;
+  cracks.Id = "cracks-teapot";
+  cracks.Title = "teapot, static environment, two-sided, ice about 1/5 of the screen";
+  cracks.Object = "teapot";
+  cracks.Quick = true;
+  cracks.Configurations = { Plain() };
+  for (int n : { 0, 2, 8, 32, 128 })
+  {
+    cracks.Configurations.push_back(
+      Ice(std::to_string(n) + (n == 1 ? " crack" : " cracks"), Material::TwoSided, n));
+  }
+  groups.push_back(cracks);
+
+  for (const char* size : { "1k", "10k", "100k", "1M" })
+  {
+    Group g;
+    g.Id = std::string("triangles-") + size;
+    g.Title = std::string("sphere of ") + size + " triangles, static environment, about 1/5";
+    g.Object = std::string("sphere-") + size;
+    g.Quick = std::string(size) == "1k" || std::string(size) == "10k";
+    g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
+      Ice("two-sided ice", Material::TwoSided) };
+    groups.push_back(g);
+  }
+  return groups;
+}
+
+// Quick mode keeps the cheap end of every scaling series.
+void Shorten(Group& g)
+{
+  auto keep = [&](const std::function<bool(const Configuration&)>& wanted) {
+    std::vector<Configuration> kept;
+    for (const Configuration& c : g.Configurations)
+    {
+      if (c.Ice == Material::Plain || wanted(c))
+      {
+        kept.push_back(c);
+      }
+    }
+    g.Configurations = kept;
+  };
+  if (g.Id == "dynamic-teapot")
+  {
+    keep([](const Configuration& c) {
+      return !c.CubeMap || (c.FaceSize == 128) ||
+        (c.UpdateMode == vtkIceCubeMapPass::OnChange && !c.Moving);
+    });
+  }
+  else if (g.Id == "cracks-teapot")
+  {
+    keep([](const Configuration& c) { return c.Cracks <= 8; });
+  }
+}
+}
+
+std::vector<Group> IceBench::SelectGroups(bool quick, const std::string& only)
+{
+  std::vector<Group> groups;
+  for (Group& g : DefineGroups())
+  {
+    if ((quick && !g.Quick) || (!only.empty() && g.Id.find(only) == std::string::npos))
+    {
+      continue;
+    }
+    if (quick)
+    {
+      Shorten(g);
+    }
+    groups.push_back(g);
+  }
+  return groups;
+}

@@ -1,0 +1,83 @@
+// ice-bench's targets (issue 8, item 4: llvmpipe, ice about 1/5 of 1024x768, ratio to plain VTK):
+// which configuration each target compares and whether it is met.
+#include "IceBench.h"
+
+#include "vtkIceCubeMapPass.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+using IceBench::Configuration;
+using IceBench::Group;
+using IceBench::Material;
+
+const Configuration* Find(const std::vector<Group>& groups, const std::string& id,
+  const std::function<bool(const Configuration&)>& wanted)
+{
+  for (const Group& g : groups)
+  {
+    if (g.Id != id)
+    {
+      continue;
+    }
+    for (const Configuration& c : g.Configurations)
+    {
+      if (wanted(c) && !c.Times.empty())
+      {
+        return &c;
+      }
+    }
+  }
+  return nullptr;
+}
+}
+
+std::vector<IceBench::Target> IceBench::EvaluateTargets(const std::vector<Group>& groups)
+{
+  std::vector<IceBench::Target> targets;
+  auto ratio = [&](const std::string& name, const std::string& limit, double bound,
+                 const Configuration* c) {
+    IceBench::Target t;
+    t.Name = name;
+    t.Limit = limit;
+    t.Bound = bound;
+    t.Measured = c != nullptr;
+    t.Value = c ? c->Ratio : 0.0;
+    t.Met = t.Measured && t.Value <= bound;
+    targets.push_back(t);
+  };
+  for (const char* object : { "sphere", "block", "teapot" })
+  {
+    const std::string id = std::string("objects-") + object;
+    ratio(std::string("static environment, two-sided (") + object + ")", "<= 1.3x", 1.3,
+      Find(groups, id, [](const Configuration& c) { return c.Ice == Material::TwoSided; }));
+  }
+  for (const char* object : { "sphere", "block", "teapot" })
+  {
+    const std::string id = std::string("objects-") + object;
+    ratio(std::string("+ cracks + air (") + object + ")", "<= 1.5x", 1.5,
+      Find(groups, id, [](const Configuration& c) { return c.Ice == Material::CracksAir; }));
+  }
+  ratio("dynamic cube map every frame (teapot, landscape, 512)", "<= 3x", 3.0,
+    Find(groups, "dynamic-teapot", [](const Configuration& c) {
+      return c.CubeMap && c.UpdateMode == vtkIceCubeMapPass::EveryFrame && c.FaceSize == 512 &&
+        c.FacesPerFrame == 6 && c.Culling;
+    }));
+  const Configuration* two = Find(groups, "cracks-teapot",
+    [](const Configuration& c) { return c.Ice == Material::TwoSided && c.Cracks == 2; });
+  const Configuration* many = Find(groups, "cracks-teapot",
+    [](const Configuration& c) { return c.Ice == Material::TwoSided && c.Cracks == 128; });
+  IceBench::Target t;
+  t.Name = "cracks 2 -> 128 (teapot)";
+  t.Limit = "adds <= 15 %";
+  t.Bound = 0.15;
+  t.IsIncrease = true;
+  t.Measured = two && many;
+  t.Value = t.Measured ? many->Stats.Median / two->Stats.Median - 1.0 : 0.0;
+  t.Met = t.Measured && t.Value <= t.Bound;
+  targets.push_back(t);
+  return targets;
+}
