@@ -23,19 +23,6 @@ vtkIceAirMapper::vtkIceAirMapper()
 vtkIceAirMapper::~vtkIceAirMapper() = default;
 
 //------------------------------------------------------------------------------
-void vtkIceAirMapper::SetDepthIntervalTexture(vtkTextureObject* texture)
-{
-  // A per-frame texture read as a uniform: not a reason to rebuild anything.
-  this->DepthIntervalTexture = texture;
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkIceAirMapper::GetDepthIntervalTexture()
-{
-  return this->DepthIntervalTexture;
-}
-
-//------------------------------------------------------------------------------
 void vtkIceAirMapper::SetAirTexture(vtkTexture* texture)
 {
   if (this->AirTexture != texture)
@@ -72,24 +59,18 @@ void vtkIceAirMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceAirMapper::ReplaceIceShaderValues(
-  std::string& vs, std::string& fs, vtkRenderer*, vtkActor*)
+void vtkIceAirMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer*, vtkActor*)
 {
-  using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
-  InsertAfterTag(vs, "//VTK::Normal::Dec", Get(vtkIceAirVS, "Dec"));
-  InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceAirVS, "Impl"));
-  InsertAfterTag(fs, "//VTK::Normal::Dec", Get(vtkIceAirFS, "Dec"));
-  InsertAfterTag(fs, "//VTK::Light::Impl", Get(vtkIceAirFS, "Impl"));
+  parts.VertexDeclarations += Get(vtkIceAirVS, "Dec");
+  parts.VertexImpl += Get(vtkIceAirVS, "Impl");
+  parts.FragmentDeclarations += Get(vtkIceAirFS, "Dec");
+  parts.FragmentImpl += Get(vtkIceAirFS, "Impl");
 }
 
 //------------------------------------------------------------------------------
-void vtkIceAirMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor*)
+void vtkIceAirMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer*, vtkActor*)
 {
-  if (this->DepthIntervalTexture)
-  {
-    this->BindScreenTexture(program, ren, this->DepthIntervalTexture, "iceDepthInterval");
-  }
   if (this->AirTexture)
   {
     program->SetUniformi("iceAirAtlas", this->AirTexture->GetTextureUnit());

@@ -1,36 +1,29 @@
 /**
  * @class   vtkIceAirMapper
- * @brief   Draws the air-bubble planes inside ice, clipped to the ice's depth interval.
+ * @brief   Draws the air-bubble planes inside ice, clipped to its depth interval (private to
+ *          the module).
  *
  * Used by vtkIceMapper for its air (the milky look of ice). The input is a set of planes with
  * texture coordinates in the point array "vtkIceAirUV"; the fragment shader samples the bubble
  * atlas (AirTexture, e.g. from vtkIceAirTextureSource), whitens and thickens it by Milkiness,
- * discards fragments outside the ice's [front, back] depth interval and is tested against the
+ * discards fragments outside the ice's [front, back] depth interval (iceDepthInterval, handed
+ * over by vtkIcePass) and is tested against the
  * scene at the ice's front depth. Drawn with alpha blending, planes sorted back to front.
  * DebugColor draws solid green where a bubble covers.
  */
 #ifndef vtkIceAirMapper_h
 #define vtkIceAirMapper_h
 
-#include "RenderingIceModule.h" // for export macro
 #include "vtkIceWorldSpaceMapper.h"
 
 class vtkTexture;
 
-class RENDERINGICE_EXPORT vtkIceAirMapper : public vtkIceWorldSpaceMapper
+class vtkIceAirMapper : public vtkIceWorldSpaceMapper
 {
 public:
   static vtkIceAirMapper* New();
   vtkTypeMacro(vtkIceAirMapper, vtkIceWorldSpaceMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The ice's depth interval (R: front view depth, G: back view depth) at viewport size.
-   */
-  void SetDepthIntervalTexture(vtkTextureObject* texture);
-  vtkTextureObject* GetDepthIntervalTexture();
-  ///@}
 
   ///@{
   /**
@@ -64,11 +57,9 @@ protected:
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceIceShaderValues(std::string& vertexShader, std::string& fragmentShader,
-    vtkRenderer* ren, vtkActor* act) override;
+  void AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren, vtkActor* act) override;
   void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) override;
 
-  vtkSmartPointer<vtkTextureObject> DepthIntervalTexture;
   vtkSmartPointer<vtkTexture> AirTexture;
   double Milkiness = 0.5;
   bool DebugColor = false;

@@ -66,9 +66,9 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
 bool vtkIceBackfaceNormalPass::PostReplaceShaderValues(std::string&, std::string&,
   std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  vtkShaderProgram::Substitute(fragmentShader, "//ICEHOOK::Output",
+  vtkIceShaderSections::FillHook(fragmentShader, "Output",
     vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Impl"));
-  vtkShaderProgram::Substitute(fragmentShader, "//ICEHOOK::CrackOutput",
+  vtkIceShaderSections::FillHook(fragmentShader, "CrackOutput",
     vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Crack"));
   return true;
 }

@@ -18,44 +18,24 @@ vtkIceCrackMapper::vtkIceCrackMapper() = default;
 vtkIceCrackMapper::~vtkIceCrackMapper() = default;
 
 //------------------------------------------------------------------------------
-void vtkIceCrackMapper::SetDepthIntervalTexture(vtkTextureObject* texture)
+void vtkIceCrackMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer*, vtkActor*)
 {
-  // A per-frame texture read as a uniform: not a reason to rebuild anything.
-  this->DepthIntervalTexture = texture;
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkIceCrackMapper::GetDepthIntervalTexture()
-{
-  return this->DepthIntervalTexture;
-}
-
-//------------------------------------------------------------------------------
-void vtkIceCrackMapper::ReplaceIceShaderValues(
-  std::string&, std::string& fs, vtkRenderer*, vtkActor*)
-{
-  using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
-  InsertAfterTag(fs, "//VTK::Normal::Dec",
-    Get(vtkIceValueNoise, "Dec") + Get(vtkIceCrackFS, "Dec"));
+  parts.FragmentDeclarations += Get(vtkIceValueNoise, "Dec") + Get(vtkIceCrackFS, "Dec");
   // The bump mapping tilts VTK's lighting normal, which the shader has only when the actor is lit:
   // before a renderer's first frame has created its automatic light, cracks drawn into the
   // back-face pass are not (and show no highlight anyway).
   const bool lit = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity > 0;
-  InsertAfterTag(fs, "//VTK::Normal::Impl",
-    Get(vtkIceCrackFS, "Interval") + (lit ? Get(vtkIceCrackFS, "Normal") : std::string()));
-  InsertAfterTag(fs, "//VTK::Light::Impl", Get(vtkIceCrackFS, "Impl"));
+  parts.FragmentNormalImpl +=
+    Get(vtkIceCrackFS, "Interval") + (lit ? Get(vtkIceCrackFS, "Normal") : std::string());
+  parts.FragmentImpl += Get(vtkIceCrackFS, "Impl");
 }
 
 //------------------------------------------------------------------------------
 void vtkIceCrackMapper::SetIceShaderParameters(
-  vtkShaderProgram* program, vtkRenderer* ren, vtkActor*)
+  vtkShaderProgram* program, vtkRenderer*, vtkActor*)
 {
-  if (this->DepthIntervalTexture)
-  {
-    this->BindScreenTexture(program, ren, this->DepthIntervalTexture, "iceDepthInterval");
-  }
-  program->SetUniformi("iceCrackClip", this->ClipToInterval && this->DepthIntervalTexture ? 1 : 0);
+  program->SetUniformi("iceCrackClip", this->ClipToInterval ? 1 : 0);
   program->SetUniformi("iceCrackDebug", this->DebugColor ? 1 : 0);
   program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Intensity));
   program->SetUniformf("iceBumpStrength", static_cast<float>(this->BumpStrength));

@@ -1,34 +1,27 @@
 /**
  * @class   vtkIceCrackMapper
- * @brief   Draws crack surfaces inside ice: a bump-mapped specular highlight, nothing else.
+ * @brief   Draws crack surfaces inside ice (private to the module): a bump-mapped specular
+ *          highlight, nothing else.
  *
  * Used by vtkIceMapper for its cracks (paper section 3.3). The fragment shader tilts the normal by
  * a noise field fixed to the crack (bump mapping), keeps only the specular term of VTK's lighting,
  * and, with ClipToInterval on, discards fragments whose view depth is outside the ice's
- * [front, back] depth interval read from the DepthIntervalTexture. Fragments are tested against
+ * [front, back] depth interval, the sampler iceDepthInterval that vtkIcePass hands to the
+ * shaders of the ice and its cracks. Fragments are tested against
  * the scene at the ice's front depth, so what hides the ice hides its cracks. DebugColor draws
  * solid red instead of the highlight.
  */
 #ifndef vtkIceCrackMapper_h
 #define vtkIceCrackMapper_h
 
-#include "RenderingIceModule.h" // for export macro
 #include "vtkIceWorldSpaceMapper.h"
 
-class RENDERINGICE_EXPORT vtkIceCrackMapper : public vtkIceWorldSpaceMapper
+class vtkIceCrackMapper : public vtkIceWorldSpaceMapper
 {
 public:
   static vtkIceCrackMapper* New();
   vtkTypeMacro(vtkIceCrackMapper, vtkIceWorldSpaceMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The ice's depth interval (R: front view depth, G: back view depth) at viewport size.
-   */
-  void SetDepthIntervalTexture(vtkTextureObject* texture);
-  vtkTextureObject* GetDepthIntervalTexture();
-  ///@}
 
   ///@{
   /**
@@ -68,11 +61,9 @@ protected:
   vtkIceCrackMapper();
   ~vtkIceCrackMapper() override;
 
-  void ReplaceIceShaderValues(std::string& vertexShader, std::string& fragmentShader,
-    vtkRenderer* ren, vtkActor* act) override;
+  void AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren, vtkActor* act) override;
   void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) override;
 
-  vtkSmartPointer<vtkTextureObject> DepthIntervalTexture;
   bool ClipToInterval = true;
   bool DebugColor = false;
   double Intensity = 1.0;

@@ -7,7 +7,6 @@
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
-#include "vtkInformationObjectBaseKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -36,7 +35,6 @@
 
 vtkStandardNewMacro(vtkIceCubeMapPass);
 vtkCxxSetObjectMacro(vtkIceCubeMapPass, DelegatePass, vtkRenderPass);
-vtkInformationKeyMacro(vtkIceCubeMapPass, ENVIRONMENT, ObjectBase);
 
 namespace
 {
@@ -424,38 +422,6 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
     }
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
-}
-
-//------------------------------------------------------------------------------
-void vtkIceCubeMapPass::AttachCubeMaps(const vtkRenderState* s)
-{
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = s->GetPropArray()[i];
-    vtkTextureObject* cubeMap = this->GetCubeMap(prop);
-    if (!cubeMap)
-    {
-      continue;
-    }
-    if (!prop->GetPropertyKeys())
-    {
-      vtkNew<vtkInformation> keys;
-      prop->SetPropertyKeys(keys);
-    }
-    prop->GetPropertyKeys()->Set(ENVIRONMENT(), cubeMap);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceCubeMapPass::DetachCubeMaps(const vtkRenderState* s)
-{
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    if (vtkInformation* keys = s->GetPropArray()[i]->GetPropertyKeys())
-    {
-      keys->Remove(ENVIRONMENT());
-    }
-  }
 }
 
 //------------------------------------------------------------------------------

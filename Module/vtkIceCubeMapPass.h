@@ -106,20 +106,9 @@ public:
   void Render(const vtkRenderState* s) override;
 
   /**
-   * Puts each ice prop's cube map on the prop (key ENVIRONMENT) for its mapper, or removes it.
-   */
-  void AttachCubeMaps(const vtkRenderState* s);
-  void DetachCubeMaps(const vtkRenderState* s);
-
-  /**
    * The cube map of `iceProp`, or null if it has none yet.
    */
   vtkTextureObject* GetCubeMap(vtkProp* iceProp);
-
-  /**
-   * Key on an ice prop's property keys holding its cube map (a vtkTextureObject) for the frame.
-   */
-  static vtkInformationObjectBaseKey* ENVIRONMENT();
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
 

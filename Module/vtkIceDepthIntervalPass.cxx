@@ -111,7 +111,7 @@ bool vtkIceDepthIntervalPass::PostReplaceShaderValues(std::string&, std::string&
 {
   vtkIceShaderSections::InsertDeclarations(
     fragmentShader, vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Dec"));
-  vtkShaderProgram::Substitute(fragmentShader, "//ICEHOOK::Output",
+  vtkIceShaderSections::FillHook(fragmentShader, "Output",
     vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Impl"));
   return true;
 }

@@ -1,60 +1,31 @@
 #include "vtkIceMapper.h"
 
-#include "vtkIceAirMapper.h"
-#include "vtkIceAirTextureSource.h"
 #include "vtkIceBumpFS.h"
-#include "vtkIceCrackMapper.h"
-#include "vtkIceCrackSource.h"
-#include "vtkIceCubeMapPass.h"
-#include "vtkIceCubeMapSource.h"
-#include "vtkIceDebugDepthFS.h"
 #include "vtkIceGlistening.h"
 #include "vtkIceGlisteningTexture.h"
-#include "vtkIceNoise.h"
+#include "vtkIceInterior.h"
 #include "vtkIceOptics.h"
+#include "vtkIcePass.h"
 #include "vtkIceShaderSections.h"
+#include "vtkIceStaticEnvironment.h"
 #include "vtkIceSurfaceCheck.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
 #include "vtkIceNormalMapFS.h"
-#include "vtkIceTwoSidedFS.h"
 #include "vtkIceValueNoise.h"
 
 #include "vtkActor.h"
-#include "vtkAppendPolyData.h"
-#include "vtkCamera.h"
-#include "vtkCellArray.h"
-#include "vtkFloatArray.h"
-#include "vtkImageData.h"
-#include "vtkMatrix4x4.h"
-#include "vtkPoints.h"
-#include "vtkClipPolyData.h"
-#include "vtkDoubleArray.h"
-#include "vtkImageData.h"
-#include "vtkImplicitPolyDataDistance.h"
-#include "vtkInformation.h"
-#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
-#include "vtkOpenGLTexture.h"
-#include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtkSelectEnclosedPoints.h"
 #include "vtkShaderProgram.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
-#include <numeric>
 #include <vector>
 #include <cmath>
-#include <cstdint>
 
 vtkStandardNewMacro(vtkIceMapper);
 
@@ -62,90 +33,10 @@ namespace
 {
 enum ShaderParts
 {
-  TwoSidedPart = 1,
-  DepthDebugPart = 2,
   BumpPart = 4,
   NormalMapPart = 8,
   GlisteningPart = 16
 };
-
-enum class Overlay
-{
-  Add,   // highlights: additive
-  Blend, // bubbles: alpha blending
-  Opaque // debug colours
-};
-
-// Draws `mapper` with `actor` over the rendered scene: the fragment shaders test their fragments
-// at the ice's front depth, so the depth test keeps them where the ice is seen; no depth writes.
-void DrawOverScene(vtkRenderer* ren, vtkMapper* mapper, vtkActor* actor, Overlay overlay, bool depthTest)
-{
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  state->vtkglDisable(GL_CULL_FACE);
-  if (overlay == Overlay::Opaque)
-  {
-    state->vtkglDisable(GL_BLEND);
-  }
-  else
-  {
-    state->vtkglEnable(GL_BLEND);
-    if (overlay == Overlay::Add)
-    {
-      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
-    }
-    else
-    {
-      state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    }
-  }
-  if (depthTest)
-  {
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_LEQUAL);
-  }
-  else
-  {
-    state->vtkglDisable(GL_DEPTH_TEST);
-  }
-  state->vtkglDepthMask(GL_FALSE);
-  mapper->Render(ren, actor);
-}
-const int GenericCrackModels = 3;
-
-// Random placement `index` of `sequence` inside `bounds`: a random orientation (axis uniform on
-// the sphere), the centre within the middle `spread` fraction of the bounds, a uniform scale
-// between minScale and maxScale times the largest extent. Writes the centre.
-vtkSmartPointer<vtkTransform> RandomPlacement(std::uint32_t sequence, int index,
-  const double bounds[6], double spread, double minScale, double maxScale, double center[3])
-{
-  double u[7];
-  for (int k = 0; k < 7; ++k)
-  {
-    u[k] = vtkIceNoise::Uniform(sequence, static_cast<std::uint32_t>(7 * index + k));
-  }
-  const double z = 2.0 * u[0] - 1.0;
-  const double phi = 2.0 * vtkMath::Pi() * u[1];
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  double extent = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    const double size = bounds[2 * c + 1] - bounds[2 * c];
-    center[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]) + spread * (u[3 + c] - 0.5) * size;
-    extent = std::max(extent, size);
-  }
-  auto placement = vtkSmartPointer<vtkTransform>::New();
-  placement->Translate(center);
-  placement->RotateWXYZ(360.0 * u[2], r * std::cos(phi), r * std::sin(phi), z);
-  const double scale = extent * (minScale + (maxScale - minScale) * u[6]);
-  placement->Scale(scale, scale, scale);
-  return placement;
-}
 
 // Clamps `value` to [low, high] into `member` as vtkSetClampMacro does, but refuses NaN (which
 // the macro would store: every comparison with NaN is false) with a warning naming the
@@ -167,271 +58,7 @@ bool SetClamped(
   member = clamped;
   return true;
 }
-
-// Whether every face of a cube-map texture has an image. A reader that failed (missing or
-// corrupt files) gives empty faces: bound anyway, the texture reports an error every frame and
-// the ice samples an incomplete texture (GL_INVALID_VALUE for its sampler).
-bool HasFaceImages(vtkTexture* texture)
-{
-  for (int port = 0; port < texture->GetNumberOfInputPorts(); ++port)
-  {
-    int outputPort = 0;
-    vtkAlgorithm* producer = texture->GetNumberOfInputConnections(port) > 0
-      ? texture->GetInputAlgorithm(port, 0, outputPort)
-      : nullptr;
-    if (!producer)
-    {
-      return false;
-    }
-    producer->Update(outputPort);
-    vtkImageData* face = vtkImageData::SafeDownCast(producer->GetOutputDataObject(outputPort));
-    if (!face || face->GetNumberOfPoints() == 0 || !face->GetPointData()->GetScalars())
-    {
-      return false;
-    }
-  }
-  return true;
 }
-}
-
-// The crack surfaces of one ice mapper: their geometry (cached) and what draws it.
-class vtkIceMapper::vtkCracks
-{
-public:
-  vtkNew<vtkIceCrackMapper> Mapper;
-  vtkNew<vtkActor> Actor;
-  vtkSmartPointer<vtkPolyData> Geometry;
-
-  vtkCracks()
-  {
-    vtkProperty* property = this->Actor->GetProperty();
-    property->SetAmbient(0.0);
-    property->SetDiffuse(0.0);
-    property->SetSpecular(1.0);
-    property->SetSpecularPower(40.0);
-    property->SetSpecularColor(1.0, 1.0, 1.0);
-    this->Actor->SetMapper(this->Mapper);
-    this->Mapper->ScalarVisibilityOff();
-  }
-
-  vtkPolyData* Update(vtkPolyData* ice, int number, int seed, int clipping)
-  {
-    const bool current = this->Geometry && ice == this->Ice && ice->GetMTime() == this->IceTime &&
-      number == this->Number && seed == this->Seed && clipping == this->Clipping;
-    if (!current)
-    {
-      this->Ice = ice;
-      this->IceTime = ice->GetMTime();
-      this->Number = number;
-      this->Seed = seed;
-      this->Clipping = clipping;
-      this->Geometry = Build(ice, number, seed, clipping);
-      this->Mapper->SetInputData(this->Geometry);
-    }
-    return this->Geometry;
-  }
-
-private:
-  vtkPolyData* Ice = nullptr;
-  vtkMTimeType IceTime = 0;
-  int Number = -1;
-  int Seed = 0;
-  int Clipping = -1;
-
-  static vtkSmartPointer<vtkPolyData> Build(vtkPolyData* ice, int number, int seed, int clipping)
-  {
-    double bounds[6];
-    ice->GetBounds(bounds);
-
-    vtkSmartPointer<vtkPolyData> models[GenericCrackModels];
-    for (int m = 0; m < GenericCrackModels; ++m)
-    {
-      vtkNew<vtkIceCrackSource> source;
-      source->SetSeed(GenericCrackModels * seed + m);
-      source->Update();
-      models[m] = source->GetOutput();
-    }
-
-    vtkNew<vtkAppendPolyData> append;
-    const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 7919U + 1U;
-    for (int i = 0; i < number; ++i)
-    {
-      // Near the centre, large enough to span most of the ice.
-      double center[3];
-      vtkNew<vtkTransformPolyDataFilter> place;
-      place->SetInputData(models[i % GenericCrackModels]);
-      place->SetTransform(RandomPlacement(sequence, i, bounds, 0.3, 0.48, 0.72, center));
-      append->AddInputConnection(place->GetOutputPort());
-    }
-    if (number == 0)
-    {
-      return vtkSmartPointer<vtkPolyData>::New();
-    }
-    append->Update();
-    if (clipping != vtkIceMapper::Geometry)
-    {
-      return append->GetOutput();
-    }
-    // Signed distance to the ice surface, negative inside. The sign comes from ray casting
-    // (vtkSelectEnclosedPoints): vtkImplicitPolyDataDistance's own sign is wrong for some points
-    // near edges of concave meshes. The clip interpolates the zero crossing along crack edges.
-    vtkPolyData* cracks = append->GetOutput();
-    vtkNew<vtkSelectEnclosedPoints> enclosed;
-    enclosed->SetInputData(cracks);
-    enclosed->SetSurfaceData(ice);
-    enclosed->Update();
-    vtkNew<vtkImplicitPolyDataDistance> distance;
-    distance->SetInput(ice);
-    vtkNew<vtkDoubleArray> signedDistance;
-    signedDistance->SetName("vtkIceCrackDistance");
-    signedDistance->SetNumberOfTuples(cracks->GetNumberOfPoints());
-    for (vtkIdType i = 0; i < cracks->GetNumberOfPoints(); ++i)
-    {
-      const double magnitude = std::abs(distance->EvaluateFunction(cracks->GetPoint(i)));
-      signedDistance->SetValue(i, enclosed->IsInside(i) ? -magnitude : magnitude);
-    }
-    vtkNew<vtkPolyData> measured;
-    measured->ShallowCopy(cracks);
-    measured->GetPointData()->SetScalars(signedDistance);
-    vtkNew<vtkClipPolyData> clip;
-    clip->SetInputData(measured);
-    clip->InsideOutOn(); // keep negative distances: inside the ice
-    clip->SetValue(0.0);
-    clip->Update();
-    clip->GetOutput()->GetPointData()->RemoveArray("vtkIceCrackDistance");
-    return clip->GetOutput();
-  }
-};
-
-// The air planes of one ice mapper: their geometry (cached), back-to-front order and what draws
-// them.
-class vtkIceMapper::vtkAir
-{
-public:
-  vtkNew<vtkIceAirMapper> Mapper;
-  vtkNew<vtkActor> Actor;
-  vtkSmartPointer<vtkPolyData> Geometry;
-
-  vtkAir()
-  {
-    this->Actor->GetProperty()->LightingOff();
-    this->Actor->SetMapper(this->Mapper);
-    this->Mapper->ScalarVisibilityOff();
-  }
-
-  vtkPolyData* Update(vtkPolyData* ice, int number, int seed)
-  {
-    const bool current = this->Geometry && ice == this->Ice && ice->GetMTime() == this->IceTime &&
-      number == this->Number && seed == this->Seed;
-    if (!current)
-    {
-      this->Ice = ice;
-      this->IceTime = ice->GetMTime();
-      this->Number = number;
-      this->Seed = seed;
-      this->Build(ice, number, seed);
-      this->Mapper->SetInputData(this->Geometry);
-    }
-    if (!this->Texture || seed != this->TextureSeed)
-    {
-      vtkNew<vtkIceAirTextureSource> images;
-      images->SetSeed(seed);
-      images->Update();
-      this->Texture = vtkSmartPointer<vtkTexture>::New();
-      this->Texture->SetInputData(images->GetOutput());
-      this->Texture->InterpolateOn();
-      this->Texture->MipmapOn();
-      this->Texture->RepeatOff();
-      this->Texture->EdgeClampOn();
-      this->Texture->SetColorModeToDirectScalars();
-      this->Mapper->SetAirTexture(this->Texture);
-      this->TextureSeed = seed;
-    }
-    return this->Geometry;
-  }
-
-  // Reorders the planes back to front as seen from `eye` (model coordinates).
-  void Sort(const double eye[3])
-  {
-    const vtkIdType n = static_cast<vtkIdType>(this->Centers.size() / 3);
-    std::vector<vtkIdType> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::vector<double> distance(n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      distance[i] = vtkMath::Distance2BetweenPoints(&this->Centers[3 * i], eye);
-    }
-    std::stable_sort(order.begin(), order.end(),
-      [&distance](vtkIdType a, vtkIdType b) { return distance[a] > distance[b]; });
-    if (order == this->Order)
-    {
-      return;
-    }
-    this->Order = order;
-    vtkNew<vtkCellArray> quads;
-    for (vtkIdType i : order)
-    {
-      const vtkIdType quad[4] = { 4 * i, 4 * i + 1, 4 * i + 2, 4 * i + 3 };
-      quads->InsertNextCell(4, quad);
-    }
-    this->Geometry->SetPolys(quads);
-  }
-
-private:
-  vtkPolyData* Ice = nullptr;
-  vtkMTimeType IceTime = 0;
-  int Number = -1;
-  int Seed = 0;
-  int TextureSeed = 0;
-  vtkSmartPointer<vtkTexture> Texture;
-  std::vector<double> Centers;
-  std::vector<vtkIdType> Order;
-
-  void Build(vtkPolyData* ice, int number, int seed)
-  {
-    double bounds[6];
-    ice->GetBounds(bounds);
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkFloatArray> uv;
-    uv->SetName("vtkIceAirUV");
-    uv->SetNumberOfComponents(2);
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    this->Centers.clear();
-    this->Order.clear();
-    const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 6151U + 7U;
-    for (int i = 0; i < number; ++i)
-    {
-      // In the middle 40 % of the bounds, half-sizes of 0.2 to 0.4 of the largest extent.
-      double center[3];
-      vtkSmartPointer<vtkTransform> place =
-        RandomPlacement(sequence, i, bounds, 0.4, 0.2, 0.4, center);
-      // Each plane shows one tile of the 2 x 2 atlas, inset against bleeding.
-      const double tileU = 0.5 * (i % 2);
-      const double tileV = 0.5 * ((i / 2) % 2);
-      const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
-      for (const auto& corner : corners)
-      {
-        double p[3] = { corner[0], corner[1], 0.0 };
-        place->TransformPoint(p, p);
-        points->InsertNextPoint(p);
-        uv->InsertNextTuple2(tileU + 0.01 + 0.24 * (corner[0] + 1.0), tileV + 0.01 + 0.24 * (corner[1] + 1.0));
-        double n[3] = { 0.0, 0.0, 1.0 };
-        place->TransformNormal(n, n);
-        vtkMath::Normalize(n);
-        normals->InsertNextTuple(n);
-      }
-      this->Centers.insert(this->Centers.end(), center, center + 3);
-    }
-    this->Geometry = vtkSmartPointer<vtkPolyData>::New();
-    this->Geometry->SetPoints(points);
-    this->Geometry->GetPointData()->AddArray(uv);
-    this->Geometry->GetPointData()->SetNormals(normals);
-    const double far[3] = { 0.0, 0.0, 0.0 };
-    this->Sort(far);
-  }
-};
 
 //------------------------------------------------------------------------------
 vtkIceMapper::vtkIceMapper()
@@ -439,17 +66,13 @@ vtkIceMapper::vtkIceMapper()
   , FresnelPower(3.0)
   , BackNormalWeight(0.33)
   , IceColor{ 1.0, 1.0, 1.0 }
-  , Cracks(new vtkCracks)
-  , Air(new vtkAir)
+  , Interior(new vtkIceInterior)
+  , Environment(new vtkIceStaticEnvironment)
 {
 }
 
 //------------------------------------------------------------------------------
-vtkIceMapper::~vtkIceMapper()
-{
-  delete this->Cracks;
-  delete this->Air;
-}
+vtkIceMapper::~vtkIceMapper() = default;
 
 //------------------------------------------------------------------------------
 void vtkIceMapper::SetNormalMap(vtkTexture* texture)
@@ -531,50 +154,32 @@ vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetBackfaceNormalTexture(vtkTextureObject* texture)
+int vtkIceMapper::GetFrameNeeds()
 {
-  // Per-frame textures are uniforms, not pipeline changes: no Modified().
-  this->BackfaceNormalTexture = texture;
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkIceMapper::GetBackfaceNormalTexture()
-{
-  return this->BackfaceNormalTexture;
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetDepthIntervalTexture(vtkTextureObject* texture)
-{
-  this->DepthIntervalTexture = texture;
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkIceMapper::GetDepthIntervalTexture()
-{
-  return this->DepthIntervalTexture;
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetDepthRange(double nearest, double farthest)
-{
-  this->DepthRange[0] = nearest;
-  this->DepthRange[1] = farthest;
+  int needs = 0;
+  if (this->TwoSidedRefraction)
+  {
+    needs |= NeedsBackfaceNormals;
+  }
+  const int view = this->DebugView;
+  if (view == DebugFrontDepth || view == DebugBackDepth ||
+    (this->CracksPerturbRefraction && this->NumberOfCracks > 0))
+  {
+    needs |= NeedsDepthIntervalBeforeScene;
+  }
+  // Cracks and air are clipped by the interval and drawn at the ice's front depth.
+  if (this->NumberOfCracks > 0 || this->NumberOfAirPlanes > 0 || view == DebugCracksClipped ||
+    view == DebugCracksUnclipped || view == DebugAir)
+  {
+    needs |= NeedsDepthIntervalForInterior;
+  }
+  return needs;
 }
 
 //------------------------------------------------------------------------------
 int vtkIceMapper::ShaderVariant() const
 {
   int variant = 0;
-  if (this->TwoSidedRefraction && this->BackfaceNormalTexture)
-  {
-    variant |= TwoSidedPart;
-  }
-  if ((this->DebugView == DebugFrontDepth || this->DebugView == DebugBackDepth) &&
-    this->DepthIntervalTexture)
-  {
-    variant |= DepthDebugPart;
-  }
   if (this->BumpStrength > 0.0)
   {
     variant |= this->NormalMap ? NormalMapPart : BumpPart;
@@ -598,54 +203,18 @@ bool vtkIceMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer*
 }
 
 //------------------------------------------------------------------------------
-vtkTexture* vtkIceMapper::SelectEnvironment(vtkRenderer* ren)
-{
-  vtkTexture* env = ren->GetEnvironmentTexture();
-  const bool cubeMap = env && env->GetCubeMap();
-  if (cubeMap && HasFaceImages(env))
-  {
-    return env;
-  }
-  if (!this->WarnedNoEnvironment)
-  {
-    vtkWarningMacro(<< (!env          ? "The renderer has no environment texture"
-                           : !cubeMap ? "The renderer's environment texture is not a cube map"
-                                      : "The renderer's environment cube map has faces without "
-                                        "an image (did its reader fail?)")
-                    << "; the ice reflects a built-in sky. Set a vtkTexture with CubeMapOn() "
-                       "with vtkRenderer::SetEnvironmentTexture.");
-    this->WarnedNoEnvironment = true;
-  }
-  if (!this->FallbackEnvironment)
-  {
-    vtkNew<vtkIceCubeMapSource> sky;
-    sky->SetFaceSize(64);
-    this->FallbackEnvironment = vtkSmartPointer<vtkTexture>::New();
-    sky->ConfigureTexture(this->FallbackEnvironment);
-  }
-  return this->FallbackEnvironment;
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
-{
-  vtkInformation* keys = act->GetPropertyKeys();
-  if (keys && keys->Has(vtkIceCubeMapPass::ENVIRONMENT()))
-  {
-    vtkTextureObject* cubeMap =
-      vtkTextureObject::SafeDownCast(keys->Get(vtkIceCubeMapPass::ENVIRONMENT()));
-    cubeMap->Activate();
-    return cubeMap;
-  }
-  this->ActiveEnvironment = this->SelectEnvironment(ren);
-  this->ActiveEnvironment->Render(ren);
-  return static_cast<vtkOpenGLTexture*>(this->ActiveEnvironment)->GetTextureObject();
-}
-
-//------------------------------------------------------------------------------
 void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
-  this->ActiveEnvironmentObject = this->BindEnvironment(ren, act);
+  if (this->HelpersSawPass && !vtkIcePass::GetIcePassOf(act))
+  {
+    // The pass is gone from this ice: its cracks and air, drawn only by it, let it go.
+    this->Interior->ForgetRenderPasses();
+    this->HelpersSawPass = false;
+  }
+  // A dynamic cube map is handed to the shader by the pass that rendered it.
+  vtkIcePass* pass = vtkIcePass::GetIcePassOf(act);
+  this->ActiveEnvironmentObject =
+    pass && pass->GetCubeMapOf(act) ? nullptr : this->Environment->Bind(ren, this);
   if (this->NormalMap && this->BumpStrength > 0.0)
   {
     this->NormalMap->Render(ren);
@@ -661,81 +230,47 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
   {
     this->NormalMap->PostRender(ren);
   }
-  if (this->ActiveEnvironment)
-  {
-    this->ActiveEnvironment->PostRender(ren);
-    this->ActiveEnvironment = nullptr;
-  }
-  else if (this->ActiveEnvironmentObject)
-  {
-    this->ActiveEnvironmentObject->Deactivate();
-  }
+  this->Environment->Unbind(ren);
   this->ActiveEnvironmentObject = nullptr;
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::ReplaceIceShaderValues(
-  std::string& vs, std::string& fs, vtkRenderer* ren, vtkActor* act)
+void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren, vtkActor* act)
 {
-  using vtkIceShaderSections::InsertAfterTag;
   using vtkIceShaderSections::Get;
   const std::string optics = vtkIceOptics;
   const int variant = this->ShaderVariant();
   this->ShaderVariantBuilt[this->LastBoundBO] = variant;
 
-  InsertAfterTag(vs, "//VTK::Normal::Dec", optics + Get(vtkIceSurfaceVS, "Dec"));
-  InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceSurfaceVS, "Impl"));
-
-  std::string declarations = optics + Get(vtkIceSurfaceFS, "Dec");
-  if (variant & TwoSidedPart)
-  {
-    declarations += Get(vtkIceTwoSidedFS, "Dec");
-  }
-  if (variant & DepthDebugPart)
-  {
-    declarations += Get(vtkIceDebugDepthFS, "Dec");
-  }
+  parts.VertexDeclarations += optics + Get(vtkIceSurfaceVS, "Dec");
+  parts.VertexImpl += Get(vtkIceSurfaceVS, "Impl");
+  parts.FragmentDeclarations += optics + Get(vtkIceSurfaceFS, "Dec");
+  parts.FragmentImpl += Get(vtkIceSurfaceFS, "Impl");
   if (variant & BumpPart)
   {
-    declarations += Get(vtkIceValueNoise, "Dec") + Get(vtkIceBumpFS, "Dec");
+    parts.FragmentDeclarations += Get(vtkIceValueNoise, "Dec") + Get(vtkIceBumpFS, "Dec");
+    parts.Hooks.emplace_back("SurfaceNormal", Get(vtkIceBumpFS, "Impl"));
   }
   if (variant & NormalMapPart)
   {
-    declarations += Get(vtkIceNormalMapFS, "Dec");
+    parts.FragmentDeclarations += Get(vtkIceNormalMapFS, "Dec");
+    parts.Hooks.emplace_back("SurfaceNormal", Get(vtkIceNormalMapFS, "Impl"));
   }
   if (variant & GlisteningPart)
   {
-    declarations += vtkIceGlistening::Declarations();
-  }
-  InsertAfterTag(fs, "//VTK::Normal::Dec", declarations);
-  InsertAfterTag(fs, "//VTK::Light::Impl", Get(vtkIceSurfaceFS, "Impl"));
-  if (variant & TwoSidedPart)
-  {
-    vtkShaderProgram::Substitute(fs, "//ICEHOOK::RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
-  }
-  if (variant & DepthDebugPart)
-  {
-    vtkShaderProgram::Substitute(fs, "//ICEHOOK::Debug", Get(vtkIceDebugDepthFS, "Impl"));
+    parts.FragmentDeclarations += vtkIceGlistening::Declarations();
+    // The light calls follow VTK's light loop (set by the superclass's GetNeedToRebuildShaders).
+    const auto& lights = this->PrimitiveInfo[this->LastBoundBO];
+    parts.Hooks.emplace_back("Glistening",
+      vtkIceGlistening::Code(
+        lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount));
   }
   if (this->DrawingEdges(ren, act))
   {
     // VTK's edge code (before the lighting) weighs edge pixels by emix; the ice colour replaces
     // the lit colour, so the edges go over it here.
-    vtkShaderProgram::Substitute(
-      fs, "//ICEHOOK::Edges", "gl_FragData[0].rgb = mix(gl_FragData[0].rgb, edgeColor, emix);");
-  }
-  if (variant & (BumpPart | NormalMapPart))
-  {
-    vtkShaderProgram::Substitute(fs, "//ICEHOOK::SurfaceNormal",
-      Get(variant & BumpPart ? vtkIceBumpFS : vtkIceNormalMapFS, "Impl"));
-  }
-  if (variant & GlisteningPart)
-  {
-    // The light calls follow VTK's light loop (set by the superclass's GetNeedToRebuildShaders).
-    const auto& lights = this->PrimitiveInfo[this->LastBoundBO];
-    vtkShaderProgram::Substitute(fs, "//ICEHOOK::Glistening",
-      vtkIceGlistening::Code(
-        lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount));
+    parts.Hooks.emplace_back(
+      "Edges", "gl_FragData[0].rgb = mix(gl_FragData[0].rgb, edgeColor, emix);");
   }
 }
 
@@ -743,31 +278,26 @@ void vtkIceMapper::ReplaceIceShaderValues(
 void vtkIceMapper::SetIceShaderParameters(
   vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
 {
-  if (!this->ActiveEnvironmentObject)
-  {
-    return;
-  }
   const float tint[3] = { static_cast<float>(this->IceColor[0]),
     static_cast<float>(this->IceColor[1]), static_cast<float>(this->IceColor[2]) };
   program->SetUniform3f("iceTint", tint);
   program->SetUniformf("iceRefractionRatio", static_cast<float>(this->RefractionRatio));
   program->SetUniformf("iceFresnelPower", static_cast<float>(this->FresnelPower));
-  program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());
-
-  const int variant = this->ShaderVariant();
-  if (variant & TwoSidedPart)
+  if (this->ActiveEnvironmentObject)
   {
-    this->BindScreenTexture(program, ren, this->BackfaceNormalTexture, "iceBackNormals");
+    program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());
+  }
+  // The parameters of the parts vtkIcePass adds (two-sided refraction, depth debug views).
+  if (program->IsUniformUsed("iceBackNormalWeight"))
+  {
     program->SetUniformf("iceBackNormalWeight", static_cast<float>(this->BackNormalWeight));
   }
-  if (variant & DepthDebugPart)
+  if (program->IsUniformUsed("iceDebugChannel"))
   {
-    this->BindScreenTexture(program, ren, this->DepthIntervalTexture, "iceDepthInterval");
-    const float range[2] = { static_cast<float>(this->DepthRange[0]),
-      static_cast<float>(this->DepthRange[1]) };
-    program->SetUniform2f("iceDepthRange", range);
     program->SetUniformi("iceDebugChannel", this->DebugView == DebugFrontDepth ? 0 : 1);
   }
+
+  const int variant = this->ShaderVariant();
   if (variant & (BumpPart | NormalMapPart))
   {
     program->SetUniformf("iceBumpStrength", static_cast<float>(this->BumpStrength));
@@ -787,11 +317,11 @@ void vtkIceMapper::SetIceShaderParameters(
     vtkTextureObject* noise = this->GlisteningNoise->GetTextureObject(
       static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()));
     noise->Activate();
-    // Deactivated after the draw with the screen textures.
-    if (std::find(this->BoundScreenTextures.begin(), this->BoundScreenTextures.end(), noise) ==
-      this->BoundScreenTextures.end())
+    // Deactivated after the draw.
+    if (std::find(this->DrawTextures.begin(), this->DrawTextures.end(), noise) ==
+      this->DrawTextures.end())
     {
-      this->BoundScreenTextures.push_back(noise);
+      this->DrawTextures.push_back(noise);
     }
     vtkIceGlistening::Parameters parameters;
     parameters.Scale = this->GlisteningScale;
@@ -821,8 +351,8 @@ vtkPolyData* vtkIceMapper::GetCrackGeometry()
   }
   // Ice without volume has no inside to hold cracks.
   const int cracks = this->InputFlat ? 0 : this->NumberOfCracks;
-  return this->Cracks->Update(this->PreparedInput, cracks, this->CrackSeed,
-    cracks > 0 ? this->UsableCrackClipping() : DepthInterval);
+  return this->Interior->UpdateCracks(this->PreparedInput, cracks, this->CrackSeed,
+    cracks > 0 && this->UsableCrackClipping() == Geometry);
 }
 
 //------------------------------------------------------------------------------
@@ -880,37 +410,19 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
     return;
   }
   vtkPolyData* geometry = this->GetCrackGeometry();
-  if (!geometry || geometry->GetNumberOfPolys() == 0 || !this->DepthIntervalTexture)
+  if (!geometry || geometry->GetNumberOfPolys() == 0)
   {
     return;
   }
-  vtkIceCrackMapper* mapper = this->Cracks->Mapper;
   const bool unclipped = this->DebugView == DebugCracksUnclipped;
-  mapper->SetDepthIntervalTexture(this->DepthIntervalTexture);
-  mapper->SetClipToInterval(this->UsableCrackClipping() == DepthInterval && !unclipped);
-  mapper->SetDebugColor(debugCracks);
-  mapper->SetIntensity(this->CrackIntensity);
-  mapper->SetBumpFrequency(8.0 / this->InputExtent());
-  vtkActor* crackActor = this->Cracks->Actor;
-  crackActor->SetUserMatrix(actor->GetMatrix());
-  // Share the ice actor's keys: render passes that hook the ice hook its cracks too.
-  crackActor->SetPropertyKeys(actor->GetPropertyKeys());
-  if (overlay)
-  {
-    DrawOverScene(ren, mapper, crackActor, debugCracks ? Overlay::Opaque : Overlay::Add, !unclipped);
-  }
-  else
-  {
-    vtkOpenGLState* state =
-      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-    state->vtkglDisable(GL_CULL_FACE);
-    mapper->Render(ren, crackActor);
-  }
-  crackActor->SetPropertyKeys(nullptr);
-  // The texture belongs to the pass and lives for this frame only: holding it would keep it
-  // (and its GL texture) alive after the pass is released or deleted.
-  mapper->SetDepthIntervalTexture(nullptr);
+  vtkIceInterior::CrackLook look;
+  look.ClipToInterval = this->UsableCrackClipping() == DepthInterval && !unclipped;
+  look.Debug = debugCracks;
+  look.Unclipped = unclipped;
+  look.Intensity = this->CrackIntensity;
+  look.BumpFrequency = 8.0 / this->InputExtent();
+  this->HelpersSawPass = true;
+  this->Interior->DrawCracks(ren, actor, look, overlay);
   ++this->NumberOfCrackDraws;
 }
 
@@ -918,8 +430,7 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
 void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
 {
   const bool debugAir = this->DebugView == DebugAir;
-  if (this->NumberOfAirPlanes == 0 || !this->DepthIntervalTexture ||
-    (this->DebugView != DebugOff && !debugAir))
+  if (this->NumberOfAirPlanes == 0 || (this->DebugView != DebugOff && !debugAir))
   {
     return;
   }
@@ -928,36 +439,16 @@ void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
   {
     return;
   }
-  this->Air->Update(this->PreparedInput, this->NumberOfAirPlanes, this->AirSeed);
-
-  // Back to front for this camera: the eye in the ice's model coordinates.
-  double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
-  ren->GetActiveCamera()->GetPosition(eye);
-  vtkNew<vtkMatrix4x4> worldToModel;
-  vtkMatrix4x4::Invert(actor->GetMatrix(), worldToModel);
-  worldToModel->MultiplyPoint(eye, eye);
-  this->Air->Sort(eye);
-
-  vtkIceAirMapper* mapper = this->Air->Mapper;
-  mapper->SetDepthIntervalTexture(this->DepthIntervalTexture);
-  mapper->SetMilkiness(this->Milkiness);
-  mapper->SetDebugColor(debugAir);
-  vtkActor* airActor = this->Air->Actor;
-  airActor->SetUserMatrix(actor->GetMatrix());
-  DrawOverScene(ren, mapper, airActor, debugAir ? Overlay::Opaque : Overlay::Blend, true);
-  // The texture belongs to the pass and lives for this frame only (see RenderCracks).
-  mapper->SetDepthIntervalTexture(nullptr);
+  this->HelpersSawPass = true;
+  this->Interior->DrawAir(ren, actor, this->PreparedInput, this->NumberOfAirPlanes, this->AirSeed,
+    this->Milkiness, debugAir);
 }
 
 //------------------------------------------------------------------------------
 void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
-  if (this->FallbackEnvironment)
-  {
-    this->FallbackEnvironment->ReleaseGraphicsResources(win);
-  }
-  this->Cracks->Mapper->ReleaseGraphicsResources(win);
-  this->Air->Mapper->ReleaseGraphicsResources(win);
+  this->Environment->ReleaseGraphicsResources(win);
+  this->Interior->ReleaseGraphicsResources(win);
   if (this->GlisteningNoise)
   {
     this->GlisteningNoise->ReleaseGraphicsResources(win);

@@ -34,10 +34,12 @@
 #include "RenderingIceModule.h" // for export macro
 #include "vtkIceWorldSpaceMapper.h"
 
-#include <map> // for members
+#include <map>    // for members
+#include <memory> // for members
 
 class vtkActor;
-class vtkIceCrackMapper;
+class vtkIceInterior;
+class vtkIceStaticEnvironment;
 class vtkIceGlisteningTexture;
 class vtkProp;
 class vtkTexture;
@@ -316,23 +318,17 @@ public:
    */
   vtkGetMacro(NumberOfCrackDraws, vtkIdType);
 
-  ///@{
   /**
-   * The current frame's viewport-sized textures, set by vtkIcePass before rendering the scene and
-   * cleared afterwards: back-face normals (RGB world normal, alpha coverage) and the depth
-   * interval (R front, G back view depth). DepthRange is the view-depth range shown by the depth
-   * debug views. Like the textures, these are per-frame shader inputs: setting them does not
-   * modify the mapper (a new MTime would rebuild its buffers and shaders every frame the camera
-   * moves).
+   * What this ice needs vtkIcePass to render for it in a frame: FrameNeeds bits. The pass
+   * renders a texture only when some ice prop needs it, and hands it to the shaders.
    */
-  void SetBackfaceNormalTexture(vtkTextureObject* texture);
-  vtkTextureObject* GetBackfaceNormalTexture();
-  void SetDepthIntervalTexture(vtkTextureObject* texture);
-  vtkTextureObject* GetDepthIntervalTexture();
-  void SetDepthRange(double nearest, double farthest);
-  void SetDepthRange(const double range[2]) { this->SetDepthRange(range[0], range[1]); }
-  vtkGetVector2Macro(DepthRange, double);
-  ///@}
+  enum FrameNeeds
+  {
+    NeedsBackfaceNormals = 1,            // two-sided refraction (TwoSidedRefraction)
+    NeedsDepthIntervalBeforeScene = 2,   // depth debug views; cracks in the back-face normals
+    NeedsDepthIntervalForInterior = 4    // its own interval, right before its cracks and air
+  };
+  int GetFrameNeeds();
 
   /**
    * The vtkIceMapper of `prop` if it is a visible vtkActor drawn by one, else null.
@@ -353,12 +349,12 @@ protected:
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceIceShaderValues(std::string& vertexShader, std::string& fragmentShader,
-    vtkRenderer* ren, vtkActor* act) override;
+  void AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren, vtkActor* act) override;
   void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  // Which optional shader parts the next build includes (two-sided, depth debug view, glistening).
+  // Which optional shader parts of the mapper's own the next build includes (bumps, glistening;
+  // vtkIcePass adds the parts that sample its textures).
   int ShaderVariant() const;
 
   // Looks at a new input: flat input (no volume, hence no inside) gets no cracks.
@@ -368,10 +364,6 @@ protected:
   // ray casting); an open one is clipped to the depth interval instead, with one warning.
   int UsableCrackClipping();
 
-  // The cube map the ice samples: the prop's dynamic cube map, the renderer's environment texture
-  // or the built-in sky. Binds it and returns it.
-  vtkTextureObject* BindEnvironment(vtkRenderer* ren, vtkActor* act);
-  vtkTexture* SelectEnvironment(vtkRenderer* ren);
 
   double RefractionRatio;
   double FresnelPower;
@@ -390,7 +382,6 @@ protected:
   double BumpStrength = 0.08;
   double BumpScale = 0.15;
   vtkSmartPointer<vtkTexture> NormalMap;
-  double DepthRange[2] = { 0.0, 1.0 };
   vtkIdType NumberOfCrackDraws = 0;
   bool Glistening = false;
   double SnowAmount = 0.0;
@@ -399,27 +390,25 @@ protected:
   double GlisteningAlignmentGain = 2.0;
   vtkSmartPointer<vtkIceGlisteningTexture> GlisteningNoise;
 
-  vtkSmartPointer<vtkTextureObject> BackfaceNormalTexture;
-  vtkSmartPointer<vtkTextureObject> DepthIntervalTexture;
   std::map<const vtkOpenGLHelper*, int> ShaderVariantBuilt;
 
-  vtkSmartPointer<vtkTexture> FallbackEnvironment;
-  vtkTexture* ActiveEnvironment = nullptr;             // bound vtkTexture, if one is used
-  vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples
-  bool WarnedNoEnvironment = false;
+  // The renderer's environment or the built-in sky, when no pass hands a dynamic cube map.
+  std::unique_ptr<vtkIceStaticEnvironment> Environment;
+  vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples, if bound here
 
   // The largest extent of the prepared input's bounds.
   double InputExtent();
 
-  class vtkCracks;
-  vtkCracks* Cracks;
-  class vtkAir;
-  vtkAir* Air;
+  std::unique_ptr<vtkIceInterior> Interior; // cracks and air
 
   // What InputPrepared and UsableCrackClipping found about the current input.
   bool InputFlat = false;
   vtkIdType InputOpenEdges = -1; // counted when Geometry clipping first needs it
   bool WarnedOpenInput = false;
+
+  // Whether the cracks or air were drawn in a vtkIcePass frame since the mapper last drew
+  // without one (see vtkIceWorldSpaceMapper::ForgetRenderPasses).
+  bool HelpersSawPass = false;
 
 private:
   vtkIceMapper(const vtkIceMapper&) = delete;

@@ -1,5 +1,9 @@
 #include "vtkIceNoise.h"
 
+#include "vtkMath.h"
+#include "vtkTransform.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace vtkIceNoise
@@ -108,5 +112,30 @@ double FractalNoise(const double p[3], std::uint32_t seed)
   }
   return sum / norm;
 }
-}
 
+//------------------------------------------------------------------------------
+void RandomPlacement(std::uint32_t sequence, int index, const double bounds[6], double spread,
+  double minScale, double maxScale, vtkTransform* placement, double center[3])
+{
+  double u[7];
+  for (int k = 0; k < 7; ++k)
+  {
+    u[k] = Uniform(sequence, static_cast<std::uint32_t>(7 * index + k));
+  }
+  const double z = 2.0 * u[0] - 1.0;
+  const double phi = 2.0 * vtkMath::Pi() * u[1];
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  double extent = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double size = bounds[2 * c + 1] - bounds[2 * c];
+    center[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]) + spread * (u[3 + c] - 0.5) * size;
+    extent = std::max(extent, size);
+  }
+  placement->Identity();
+  placement->Translate(center);
+  placement->RotateWXYZ(360.0 * u[2], r * std::cos(phi), r * std::sin(phi), z);
+  const double scale = extent * (minScale + (maxScale - minScale) * u[6]);
+  placement->Scale(scale, scale, scale);
+}
+}

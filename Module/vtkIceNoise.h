@@ -5,6 +5,8 @@
 
 #include <cstdint>
 
+class vtkTransform;
+
 namespace vtkIceNoise
 {
 // A few octaves of gradient noise at `p`, about [-1, 1], smooth in p.
@@ -12,6 +14,13 @@ double FractalNoise(const double p[3], std::uint32_t seed);
 
 // A uniform number in [0, 1), the `index`-th of the sequence of `seed`.
 double Uniform(std::uint32_t seed, std::uint32_t index);
+
+// Random placement `index` of `sequence` inside `bounds`, set on `placement`: a random
+// orientation (axis uniform on the sphere), the centre within the middle `spread` fraction of the
+// bounds, a uniform scale between minScale and maxScale times the largest extent. Writes the
+// centre.
+void RandomPlacement(std::uint32_t sequence, int index, const double bounds[6], double spread,
+  double minScale, double maxScale, vtkTransform* placement, double center[3]);
 }
 
 #endif

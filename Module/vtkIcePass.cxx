@@ -2,16 +2,21 @@
 
 #include "vtkIceBackfaceNormalPass.h"
 #include "vtkIceCubeMapPass.h"
+#include "vtkIceDebugDepthFS.h"
 #include "vtkIceDepthIntervalPass.h"
+#include "vtkIceFrameTextures.h"
 #include "vtkIceMapper.h"
 #include "vtkIceRendererSteps.h"
 #include "vtkIceScreenRegion.h"
+#include "vtkIceShaderSections.h"
+#include "vtkIceTwoSidedFS.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkNew.h"
 #include "vtkFrameBufferObjectBase.h"
 #include "vtkHardwareSelector.h"
+#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -21,11 +26,13 @@
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
+#include "vtkShaderProgram.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 
@@ -67,34 +74,11 @@ vtkPropCollection* PickFromProps(vtkRenderer* renderer)
 {
   return renderer->*vtkIcePickListAccess::Member();
 }
-
-// Whether `mapper` reads the depth interval before the scene is drawn: its surface shows it (the
-// depth debug views), or the back-face pass draws its cracks, clipped by it, into the back-face
-// normals (CracksPerturbRefraction). It is then rendered over every ice prop, before the
-// back-face pass.
-bool ReadsDepthIntervalBeforeScene(vtkIceMapper* mapper)
-{
-  return mapper->GetDebugView() == vtkIceMapper::DebugFrontDepth ||
-    mapper->GetDebugView() == vtkIceMapper::DebugBackDepth ||
-    (mapper->GetCracksPerturbRefraction() && mapper->GetNumberOfCracks() > 0);
-}
-
-// Whether the overlays of `mapper` read the depth interval: its cracks and air planes are clipped
-// by it and drawn at the ice's front depth. It is then rendered for that prop alone, right before
-// its overlays, so that no ice clips its interior by another ice's interval. Without any reader
-// the pass is skipped (two geometry passes less). A new feature that samples the depth interval
-// texture must be added to one of these two.
-bool OverlaysReadDepthInterval(vtkIceMapper* mapper)
-{
-  const int view = mapper->GetDebugView();
-  return mapper->GetNumberOfCracks() > 0 || mapper->GetNumberOfAirPlanes() > 0 ||
-    view == vtkIceMapper::DebugCracksClipped || view == vtkIceMapper::DebugCracksUnclipped ||
-    view == vtkIceMapper::DebugAir;
-}
 }
 
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
+  : FrameTextures(new vtkIceFrameTextures)
 {
   // The steps of the renderer's own rendering, with its settings (vtkIceRendererSteps.h), and
   // the ice's air and cracks right after the opaque geometry.
@@ -181,62 +165,72 @@ void vtkIcePass::Render(const vtkRenderState* s)
   }
 
   std::vector<vtkProp*> iceProps;
-  std::vector<vtkIceMapper*> iceMappers;
+  int needs = 0;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     if (vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(s->GetPropArray()[i]))
     {
       iceProps.push_back(s->GetPropArray()[i]);
-      iceMappers.push_back(mapper);
+      needs |= mapper->GetFrameNeeds();
     }
   }
   this->NumberOfIceProps = static_cast<int>(iceProps.size());
 
-  const bool runIcePasses = !iceProps.empty();
   vtkRenderState iceState(s->GetRenderer());
   iceState.SetPropArrayAndCount(iceProps.data(), static_cast<int>(iceProps.size()));
   iceState.SetFrameBuffer(s->GetFrameBuffer());
-  if (runIcePasses)
+  if (!iceProps.empty())
   {
-    if (this->CubeMapPass)
-    {
-      this->CubeMapPass->Render(&iceState);
-      this->CubeMapPass->AttachCubeMaps(&iceState);
-    }
-    if (std::any_of(iceMappers.begin(), iceMappers.end(), ReadsDepthIntervalBeforeScene))
-    {
-      this->RenderDepthInterval(&iceState);
-    }
-    this->BackfaceNormalPass->Render(&iceState);
-    for (vtkIceMapper* mapper : iceMappers)
-    {
-      mapper->SetBackfaceNormalTexture(this->BackfaceNormalPass->GetNormalTexture());
-    }
+    this->RenderIce(&iceState, needs);
   }
 
   // The default delegate draws air and cracks after the opaque geometry; another delegate gets
   // them over its finished frame.
   const bool overlaysInDelegate = this->DelegatePass == this->DefaultDelegate;
-  this->OverlayStep->IceState = runIcePasses && overlaysInDelegate ? &iceState : nullptr;
+  this->OverlayStep->IceState = this->IceState && overlaysInDelegate ? &iceState : nullptr;
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->OverlayStep->IceState = nullptr;
-
-  if (runIcePasses)
+  if (this->IceState && !overlaysInDelegate)
   {
-    if (!overlaysInDelegate)
-    {
-      this->RenderOverlays(s, &iceState);
-    }
-    for (vtkIceMapper* mapper : iceMappers)
-    {
-      mapper->SetBackfaceNormalTexture(nullptr);
-      mapper->SetDepthIntervalTexture(nullptr);
-    }
-    if (this->CubeMapPass)
-    {
-      this->CubeMapPass->DetachCubeMaps(&iceState);
-    }
+    this->RenderOverlays(s, &iceState);
+  }
+  this->EndFrame();
+}
+
+//------------------------------------------------------------------------------
+void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
+{
+  // From here to the end of the frame this pass is one of the ice props' render passes: it
+  // hands its textures to their shaders (and to their cracks' and air's, which share the keys).
+  this->IceState = iceState;
+  this->PreRender(iceState);
+  if (this->CubeMapPass)
+  {
+    this->CubeMapPass->Render(iceState);
+  }
+  if (needs & vtkIceMapper::NeedsDepthIntervalBeforeScene)
+  {
+    this->RenderDepthInterval(iceState);
+  }
+  if (needs & vtkIceMapper::NeedsBackfaceNormals)
+  {
+    this->BackfaceNormalPass->Render(iceState);
+    this->BackfaceNormals = this->BackfaceNormalPass->GetNormalTexture();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIcePass::EndFrame()
+{
+  this->FrameTextures->ReleaseAll();
+  this->BoundCubeMap = nullptr;
+  this->BackfaceNormals = nullptr;
+  this->DepthInterval = nullptr;
+  if (this->IceState)
+  {
+    this->PostRender(this->IceState);
+    this->IceState = nullptr;
   }
 }
 
@@ -280,7 +274,7 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
   {
     vtkProp* prop = iceState->GetPropArray()[i];
     vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(prop);
-    if (!OverlaysReadDepthInterval(mapper))
+    if (!(mapper->GetFrameNeeds() & vtkIceMapper::NeedsDepthIntervalForInterior))
     {
       continue;
     }
@@ -298,18 +292,101 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
 //------------------------------------------------------------------------------
 void vtkIcePass::RenderDepthInterval(const vtkRenderState* s)
 {
+  // Not sampled while it is drawn into.
+  this->FrameTextures->Release(this->DepthIntervalPass->GetDepthTexture());
+  this->DepthInterval = nullptr;
   this->DepthIntervalPass->Render(s);
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  this->DepthInterval = this->DepthIntervalPass->GetDepthTexture();
+}
+
+//------------------------------------------------------------------------------
+vtkIcePass* vtkIcePass::GetIcePassOf(vtkProp* prop)
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  if (!keys || !keys->Has(vtkOpenGLRenderPass::RenderPasses()))
   {
-    vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(s->GetPropArray()[i]);
-    mapper->SetDepthIntervalTexture(this->DepthIntervalPass->GetDepthTexture());
-    mapper->SetDepthRange(this->DepthIntervalPass->GetDepthRange());
+    return nullptr;
   }
+  for (int i = 0; i < keys->Length(vtkOpenGLRenderPass::RenderPasses()); ++i)
+  {
+    if (auto* pass = vtkIcePass::SafeDownCast(keys->Get(vtkOpenGLRenderPass::RenderPasses(), i)))
+    {
+      return pass;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkIcePass::GetCubeMapOf(vtkProp* prop)
+{
+  return this->IceState && this->CubeMapPass ? this->CubeMapPass->GetCubeMap(prop) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIcePass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fs, vtkAbstractMapper* abstractMapper, vtkProp*)
+{
+  // The surface's hooks for the parts that sample this pass's textures, filled when the texture
+  // is ready (not while a sub-pass renders it) and the ice needs it. What is ready in a stage is
+  // the same every frame, and a change of needs modifies the mapper: the program is rebuilt
+  // whenever this answer changes.
+  vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(abstractMapper);
+  if (!mapper)
+  {
+    return true;
+  }
+  using vtkIceShaderSections::Get;
+  const int needs = mapper->GetFrameNeeds();
+  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackfaceNormals))
+  {
+    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
+    vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
+  }
+  const int view = mapper->GetDebugView();
+  if (this->DepthInterval &&
+    (view == vtkIceMapper::DebugFrontDepth || view == vtkIceMapper::DebugBackDepth))
+  {
+    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceDebugDepthFS, "Dec"));
+    vtkIceShaderSections::FillHook(fs, "Debug", Get(vtkIceDebugDepthFS, "Impl"));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIcePass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (!this->IceState)
+  {
+    return true;
+  }
+  vtkRenderer* renderer = this->IceState->GetRenderer();
+  this->FrameTextures->BindScreen(program, renderer, "iceBackNormals", this->BackfaceNormals);
+  if (this->FrameTextures->BindScreen(program, renderer, "iceDepthInterval", this->DepthInterval))
+  {
+    const double* range = this->DepthIntervalPass->GetDepthRange();
+    program->SetUniform2f(
+      "iceDepthRange", std::array<float, 2>{ static_cast<float>(range[0]), static_cast<float>(range[1]) }.data());
+  }
+  if (vtkTextureObject* cubeMap = this->GetCubeMapOf(prop))
+  {
+    // One prop's cube map at a time keeps one texture unit however many ice props there are.
+    if (this->BoundCubeMap && this->BoundCubeMap != cubeMap)
+    {
+      this->FrameTextures->Release(this->BoundCubeMap);
+    }
+    this->BoundCubeMap = cubeMap;
+    this->FrameTextures->Bind(program, "iceEnvironment", cubeMap);
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
 {
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->FrameTextures->ReleaseAll();
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
   this->DepthIntervalPass->ReleaseGraphicsResources(w);
   if (this->CubeMapPass)

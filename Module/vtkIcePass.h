@@ -12,14 +12,18 @@
  * pass. Hardware selection is rendered through the renderer's vtkHardwareSelector, as without a
  * pass, and the camera's stereo projection follows the window.
  *
- * Sub-passes, in the order they run before the delegate:
+ * Sub-passes, in the order they run before the delegate, each only when an ice mapper needs what
+ * it renders (vtkIceMapper::GetFrameNeeds):
  * 1. environment: with a vtkIceCubeMapPass set (SetCubeMapPass), each ice prop gets a cube map of
  *    the scene around it (dynamic environment); without one, the renderer's environment texture
  *    is used (static environment),
- * 2. depth interval of all the ice (vtkIceDepthIntervalPass: front and back depth), only when an
- *    ice mapper shows it in a depth debug view or draws cracks into the back-face normals
- *    (CracksPerturbRefraction),
+ * 2. depth interval of all the ice (vtkIceDepthIntervalPass: front and back depth), for the depth
+ *    debug views and cracks drawn into the back-face normals (CracksPerturbRefraction),
  * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
+ * The pass owns the frame's textures. For the frame it is one of the render passes of each ice
+ * prop (vtkOpenGLRenderPass): when an ice shader is built it adds the code that samples the
+ * textures it has ready (PostReplaceShaderValues), and when one is bound it hands them over
+ * (SetShaderParameters); the mappers keep no per-frame state.
  * Right after the opaque geometry (before translucent geometry, when the delegate is the default
  * one; after the delegate otherwise) it draws, ice prop by ice prop, the prop's own depth interval
  * and its air planes (blended back to front) and cracks (highlights added), clipped to that
@@ -32,21 +36,26 @@
 #define vtkIcePass_h
 
 #include "RenderingIceModule.h" // for export macro
-#include "vtkRenderPass.h"
+#include "vtkOpenGLRenderPass.h"
+
+#include <memory> // for members
 
 class vtkIceBackfaceNormalPass;
 class vtkIceCubeMapPass;
 class vtkIceDepthIntervalPass;
+class vtkIceFrameTextures;
 class vtkIceOpaqueStep;
 class vtkIceOverlayStep;
 class vtkIceTranslucentStep;
 class vtkIceVolumeStep;
 
-class RENDERINGICE_EXPORT vtkIcePass : public vtkRenderPass
+class vtkTextureObject;
+
+class RENDERINGICE_EXPORT vtkIcePass : public vtkOpenGLRenderPass
 {
 public:
   static vtkIcePass* New();
-  vtkTypeMacro(vtkIcePass, vtkRenderPass);
+  vtkTypeMacro(vtkIcePass, vtkOpenGLRenderPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   void Render(const vtkRenderState* s) override;
@@ -87,13 +96,48 @@ public:
    */
   void RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState);
 
+  /**
+   * The vtkIcePass rendering a frame of `prop` now (one of its render passes), or null.
+   */
+  static vtkIcePass* GetIcePassOf(vtkProp* prop);
+
+  /**
+   * The dynamic cube map the pass hands to the shaders of `prop` this frame, or null (the mapper
+   * then binds the renderer's environment).
+   */
+  vtkTextureObject* GetCubeMapOf(vtkProp* prop);
+
+  ///@{
+  /**
+   * vtkOpenGLRenderPass: the code sampling the frame's textures goes into the ice shaders, and
+   * the textures to the programs sampling them.
+   */
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  ///@}
+
 protected:
   vtkIcePass();
   ~vtkIcePass() override;
 
 
-  // Renders the depth interval of the props of `s` and hands it to their mappers.
+  // Renders the ice of `iceState`'s frame before the delegate's scene.
+  void RenderIce(const vtkRenderState* iceState, int needs);
+
+  // Renders the depth interval of the props of `s`; the shaders get it from then on.
   void RenderDepthInterval(const vtkRenderState* s);
+
+  // Ends the frame: its textures are no longer handed over.
+  void EndFrame();
+
+  // The textures handed to the shaders: ready when rendered in this frame, else null.
+  vtkTextureObject* BackfaceNormals = nullptr;
+  vtkTextureObject* DepthInterval = nullptr;
+  const vtkRenderState* IceState = nullptr;
+  std::unique_ptr<vtkIceFrameTextures> FrameTextures;
+  vtkTextureObject* BoundCubeMap = nullptr;
 
   vtkIceOverlayStep* OverlayStep = nullptr;
 

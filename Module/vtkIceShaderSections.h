@@ -6,6 +6,23 @@
 #include "vtkShaderProgram.h" // for Substitute
 
 #include <string>
+#include <utility>
+#include <vector>
+
+// The ice code of one surface program, by where it goes in VTK's shaders.
+// vtkIceWorldSpaceMapper::ReplaceShaderValues inserts it, in one place and one order: the
+// world-space part first, then what its subclass appended.
+struct vtkIceShaderParts
+{
+  std::string VertexDeclarations;   // after //VTK::Normal::Dec
+  std::string VertexImpl;           // after //VTK::Light::Impl
+  std::string FragmentDeclarations; // after //VTK::Normal::Dec
+  std::string FragmentNormalImpl;   // after //VTK::Normal::Impl: before VTK's lighting
+  std::string FragmentImpl;         // after //VTK::Light::Impl: after it
+  // Hooks of the snippets (//ICEHOOK::Name) and the code replacing them. Hooks left empty are
+  // comments; a render pass may fill them in its PostReplaceShaderValues.
+  std::vector<std::pair<std::string, std::string>> Hooks;
+};
 
 namespace vtkIceShaderSections
 {
@@ -38,6 +55,26 @@ inline void InsertDeclarations(std::string& source, const std::string& declarati
 inline void InsertAfterTag(std::string& source, const std::string& tag, const std::string& code)
 {
   vtkShaderProgram::Substitute(source, tag, tag + "\n" + code);
+}
+
+// Fills hook `name` (//ICEHOOK::name) of `source` with `code`.
+inline void FillHook(std::string& source, const std::string& name, const std::string& code)
+{
+  vtkShaderProgram::Substitute(source, "//ICEHOOK::" + name, code);
+}
+
+// Inserts `parts` into the vertex and fragment sources.
+inline void Insert(const vtkIceShaderParts& parts, std::string& vs, std::string& fs)
+{
+  InsertAfterTag(vs, "//VTK::Normal::Dec", parts.VertexDeclarations);
+  InsertAfterTag(vs, "//VTK::Light::Impl", parts.VertexImpl);
+  InsertAfterTag(fs, "//VTK::Normal::Dec", parts.FragmentDeclarations);
+  InsertAfterTag(fs, "//VTK::Normal::Impl", parts.FragmentNormalImpl);
+  InsertAfterTag(fs, "//VTK::Light::Impl", parts.FragmentImpl);
+  for (const auto& hook : parts.Hooks)
+  {
+    FillHook(fs, hook.first, hook.second);
+  }
 }
 }
 

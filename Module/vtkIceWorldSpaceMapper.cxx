@@ -161,11 +161,20 @@ void vtkIceWorldSpaceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 void vtkIceWorldSpaceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
-  for (vtkTextureObject* texture : this->BoundScreenTextures)
+  for (vtkTextureObject* texture : this->DrawTextures)
   {
     texture->Deactivate();
   }
-  this->BoundScreenTextures.clear();
+  this->DrawTextures.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::ForgetRenderPasses()
+{
+  for (auto& primitive : this->PrimitiveInfo)
+  {
+    primitive.second.LastRenderPassInfo->Clear();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -208,16 +217,15 @@ void vtkIceWorldSpaceMapper::ReplaceShaderValues(
 {
   if (this->IsSurfaceHelper(this->LastBoundBO))
   {
-    using vtkIceShaderSections::InsertAfterTag;
     using vtkIceShaderSections::Get;
+    vtkIceShaderParts parts;
+    parts.VertexDeclarations = Get(vtkIceWorldSpaceVS, "Dec");
+    parts.VertexImpl = Get(vtkIceWorldSpaceVS, "Impl");
+    parts.FragmentDeclarations = Get(vtkIceWorldSpaceFS, "Dec");
+    this->AddIceShaderParts(parts, ren, act);
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    // Code inserted right after a tag lands before code inserted there earlier: the subclass goes
-    // first so that the world-space declarations and code end up before its own.
-    this->ReplaceIceShaderValues(vs, fs, ren, act);
-    InsertAfterTag(vs, "//VTK::Normal::Dec", Get(vtkIceWorldSpaceVS, "Dec"));
-    InsertAfterTag(vs, "//VTK::Light::Impl", Get(vtkIceWorldSpaceVS, "Impl"));
-    InsertAfterTag(fs, "//VTK::Normal::Dec", Get(vtkIceWorldSpaceFS, "Dec"));
+    vtkIceShaderSections::Insert(parts, vs, fs);
     shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
     PassThroughGeometryShader(vs, shaders[vtkShader::Geometry]);
@@ -277,30 +285,6 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
   program->SetUniform4f("iceDepthToWindow", depthToWindow);
 
   this->SetIceShaderParameters(program, ren, act);
-}
-
-//------------------------------------------------------------------------------
-void vtkIceWorldSpaceMapper::BindScreenTexture(
-  vtkShaderProgram* program, vtkRenderer* ren, vtkTextureObject* texture, const char* sampler)
-{
-  if (!program->IsUniformUsed(sampler))
-  {
-    return;
-  }
-  // The texture covers the renderer's viewport, which starts at the current GL viewport's origin
-  // in whatever framebuffer this draw goes to.
-  int viewport[4];
-  static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())
-    ->GetState()
-    ->vtkglGetIntegerv(GL_VIEWPORT, viewport);
-  texture->Activate();
-  if (std::find(this->BoundScreenTextures.begin(), this->BoundScreenTextures.end(), texture) ==
-    this->BoundScreenTextures.end())
-  {
-    this->BoundScreenTextures.push_back(texture);
-  }
-  program->SetUniformi(sampler, texture->GetTextureUnit());
-  program->SetUniform2i("iceViewportOrigin", viewport);
 }
 
 //------------------------------------------------------------------------------

@@ -19,6 +19,7 @@
 #include <string>  // for ReplaceIceShaderValues
 #include <vector>  // for members
 
+struct vtkIceShaderParts;
 class vtkDataSet;
 class vtkPolyData;
 class vtkTextureObject;
@@ -52,6 +53,13 @@ public:
    */
   static std::string CheckInput(vtkPolyData* input);
 
+  /**
+   * Drops the render passes VTK remembers from the last draw of each primitive (to know when to
+   * rebuild shaders). A mapper drawn only inside vtkIcePass's frame (cracks, air) would otherwise
+   * keep the pass, with its textures, alive after the user removed and deleted it.
+   */
+  void ForgetRenderPasses();
+
 protected:
   vtkIceWorldSpaceMapper();
   ~vtkIceWorldSpaceMapper() override;
@@ -71,23 +79,15 @@ protected:
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   /**
-   * Subclasses add their shader code to the vertex and fragment sources of surface primitives;
-   * the world-space declarations are already in.
+   * Subclasses append their shader code for surface primitives to `parts`, which holds the
+   * world-space part already; this class inserts it all (vtkIceShaderSections.h).
    */
-  virtual void ReplaceIceShaderValues(
-    std::string& vertexShader, std::string& fragmentShader, vtkRenderer* ren, vtkActor* act) = 0;
+  virtual void AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren, vtkActor* act) = 0;
 
   /**
    * Subclasses set their uniforms; the world-space ones are already set.
    */
   virtual void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) = 0;
-
-  /**
-   * Binds a viewport-sized texture (released after the draw) to `sampler`, and sets
-   * iceViewportOrigin.
-   */
-  void BindScreenTexture(
-    vtkShaderProgram* program, vtkRenderer* ren, vtkTextureObject* texture, const char* sampler);
 
   // Adds to the geometry shader VTK uses for edges and wide lines, if any, the copying of every
   // ice varying declared in `vs` (out TYPE iceNameVSOutput).
@@ -108,7 +108,8 @@ protected:
   vtkPolyData* PreparedSource = nullptr;
   bool PreparedValid = false;
 
-  std::vector<vtkTextureObject*> BoundScreenTextures;
+  // Textures of the mapper's own activated for a draw, deactivated after it.
+  std::vector<vtkTextureObject*> DrawTextures;
 
 private:
   vtkIceWorldSpaceMapper(const vtkIceWorldSpaceMapper&) = delete;

@@ -1,0 +1,47 @@
+/**
+ * @class   vtkIceAirGeometry
+ * @brief   The air-bubble planes inside an ice surface (private to the module).
+ *
+ * Input: the ice surface. Output: NumberOfPlanes squares at random orientations in the middle of
+ * the input's bounds (half-sizes 0.2 to 0.4 of its largest extent, placement picked by Seed),
+ * each with the texture coordinates "vtkIceAirUV" of one tile of the 2 x 2 bubble atlas and its
+ * normal. With a camera position set (SetEye, in the input's coordinates) the planes come back to
+ * front, farthest first, for alpha blending; a pipeline filter, it sorts again only when the eye
+ * or the planes change.
+ */
+#ifndef vtkIceAirGeometry_h
+#define vtkIceAirGeometry_h
+
+#include "vtkPolyDataAlgorithm.h"
+
+#include <vector> // for members
+
+class vtkIceAirGeometry : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkIceAirGeometry* New();
+  vtkTypeMacro(vtkIceAirGeometry, vtkPolyDataAlgorithm);
+
+  vtkSetClampMacro(NumberOfPlanes, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfPlanes, int);
+  vtkSetMacro(Seed, int);
+  vtkGetMacro(Seed, int);
+  vtkSetVector3Macro(Eye, double);
+  vtkGetVector3Macro(Eye, double);
+
+protected:
+  vtkIceAirGeometry() = default;
+  ~vtkIceAirGeometry() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfPlanes = 0;
+  int Seed = 1;
+  double Eye[3] = { 0.0, 0.0, 0.0 };
+
+private:
+  vtkIceAirGeometry(const vtkIceAirGeometry&) = delete;
+  void operator=(const vtkIceAirGeometry&) = delete;
+};
+
+#endif

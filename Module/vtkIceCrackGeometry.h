@@ -1,0 +1,44 @@
+/**
+ * @class   vtkIceCrackGeometry
+ * @brief   The crack surfaces inside an ice surface (private to the module).
+ *
+ * Input: the ice surface. Output: NumberOfCracks instances of three generic crack models
+ * (vtkIceCrackSource, models picked by Seed), randomly rotated, near the centre of the input's
+ * bounds and scaled to them. With ClipToSurface on, the sheets are cut where they leave the
+ * surface (which must be closed). A pipeline filter: it runs again only when the input or a
+ * parameter changes.
+ */
+#ifndef vtkIceCrackGeometry_h
+#define vtkIceCrackGeometry_h
+
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkIceCrackGeometry : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkIceCrackGeometry* New();
+  vtkTypeMacro(vtkIceCrackGeometry, vtkPolyDataAlgorithm);
+
+  vtkSetClampMacro(NumberOfCracks, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfCracks, int);
+  vtkSetMacro(Seed, int);
+  vtkGetMacro(Seed, int);
+  vtkSetMacro(ClipToSurface, bool);
+  vtkGetMacro(ClipToSurface, bool);
+
+protected:
+  vtkIceCrackGeometry() = default;
+  ~vtkIceCrackGeometry() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfCracks = 0;
+  int Seed = 1;
+  bool ClipToSurface = false;
+
+private:
+  vtkIceCrackGeometry(const vtkIceCrackGeometry&) = delete;
+  void operator=(const vtkIceCrackGeometry&) = delete;
+};
+
+#endif
