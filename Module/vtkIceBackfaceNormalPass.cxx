@@ -59,6 +59,7 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
     }
   }
   this->PostRender(s);
+  ++this->NumberOfGeometryPasses;
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 

@@ -38,6 +38,11 @@ public:
    */
   vtkTextureObject* GetNormalTexture();
 
+  /**
+   * Renders since creation.
+   */
+  vtkGetMacro(NumberOfGeometryPasses, vtkIdType);
+
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -50,6 +55,7 @@ protected:
   ~vtkIceBackfaceNormalPass() override;
 
   std::unique_ptr<vtkIceScreenTarget> Target;
+  vtkIdType NumberOfGeometryPasses = 0;
 
 private:
   vtkIceBackfaceNormalPass(const vtkIceBackfaceNormalPass&) = delete;

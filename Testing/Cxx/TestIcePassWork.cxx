@@ -1,5 +1,5 @@
 // The ice passes skip work that does not show, without changing a pixel: the depth-interval pass
-// runs only when something reads it; a moving camera modifies no mapper; the back-normal and
+// runs only when something reads it, the back-face pass only for two-sided ice; a moving camera modifies no mapper; the back-normal and
 // depth-interval textures are cleared only where the ice is or was, and cracks are scissored to
 // the ice, so ice moving across the screen (partly off it, and with the camera inside its
 // bounds) renders exactly what a fresh window renders, and leaves the textures as a fresh window
@@ -13,11 +13,13 @@
 #include "vtkIcePass.h"
 
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkNew.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
 
@@ -133,6 +135,74 @@ bool DepthIntervalOnlyWhenRead()
   return ok;
 }
 
+bool BackfaceNormalsOnlyWhenNeeded()
+{
+  Scene scene;
+  auto passesPerFrame = [&]() {
+    scene.Window->Render();
+    const vtkIdType before = scene.Pass->GetBackfaceNormalPass()->GetNumberOfGeometryPasses();
+    scene.Window->Render();
+    return scene.Pass->GetBackfaceNormalPass()->GetNumberOfGeometryPasses() - before;
+  };
+  bool ok = Expect(passesPerFrame() == 1, "two-sided ice: the back-face pass runs once a frame");
+  const IceTest::Image twoSided = IceTest::Capture(scene.Window);
+  scene.Mapper->TwoSidedRefractionOff();
+  ok = Expect(passesPerFrame() == 0, "one-sided ice: no back-face pass") && ok;
+  const IceTest::Image oneSided = IceTest::Capture(scene.Window);
+  size_t differing = 0;
+  for (int y = 0; y < twoSided.Height; ++y)
+  {
+    for (int x = 0; x < twoSided.Width; ++x)
+    {
+      differing += IceTest::PixelDifference(twoSided.At(x, y), oneSided.At(x, y)) > 2 ? 1 : 0;
+    }
+  }
+  ok = Expect(differing > 100,
+         "and the ice refracts otherwise without the back faces (" + std::to_string(differing) +
+           " pixels differ by more than 2/255)") &&
+    ok;
+  return ok;
+}
+
+// The pass is one of the ice prop's render passes only while it renders a frame: it hands its
+// textures to the programs it built code into, and nothing of the frame stays on the prop or
+// the mapper.
+bool PassHoldsTheFrame()
+{
+  Scene scene;
+  struct Observation
+  {
+    vtkActor* Ice;
+    vtkIcePass* Pass;
+    int Binds = 0;
+    int WithPass = 0;
+    int SamplingBackNormals = 0;
+  } seen{ scene.Ice, scene.Pass };
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&seen);
+  observer->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* observation = static_cast<Observation*>(clientData);
+    ++observation->Binds;
+    observation->WithPass += vtkIcePass::GetIcePassOf(observation->Ice) == observation->Pass;
+    observation->SamplingBackNormals +=
+      static_cast<vtkShaderProgram*>(callData)->IsUniformUsed("iceBackNormals");
+  });
+  scene.Mapper->AddObserver(vtkCommand::UpdateShaderEvent, observer);
+  scene.Window->Render();
+  bool ok = Expect(seen.Binds > 0 && seen.WithPass == seen.Binds,
+    "every ice program bound in the frame sees the pass among the prop's render passes (" +
+      std::to_string(seen.WithPass) + " of " + std::to_string(seen.Binds) + ")");
+  ok = Expect(seen.SamplingBackNormals == 1,
+         "the pass built its back-face sampling into the surface program drawn in the scene "
+         "(not into the programs of its own sub-passes): " +
+           std::to_string(seen.SamplingBackNormals) + " bound") &&
+    ok;
+  ok = Expect(vtkIcePass::GetIcePassOf(scene.Ice) == nullptr,
+         "after the frame the prop has no ice pass among its render passes") &&
+    ok;
+  return ok;
+}
+
 // What the pass hands the mapper every frame (textures, the fitted depth range) are shader
 // inputs: a moving camera must not modify the mapper, or VTK rebuilds its buffers and shaders
 // every frame.
@@ -207,6 +277,8 @@ int TestIcePassWork(int, char*[])
 {
   bool ok = DepthIntervalOnlyWhenRead();
   ok = CameraMotionModifiesNothing() && ok;
+  ok = BackfaceNormalsOnlyWhenNeeded() && ok;
+  ok = PassHoldsTheFrame() && ok;
   ok = MovingIce(vtkIceMapper::DebugOff) && ok;
   // Unclipped cracks read the depth interval outside the ice too (at their own depth where
   // there is no ice): what the ice left behind must be cleared.
