@@ -148,7 +148,9 @@ Proc GetProcAddress(const GLubyte* name)
 }
 
 // Marks this library's own address for GLRoutingActive.
-void Anchor() {}
+void Anchor()
+{
+}
 }
 
 extern "C"

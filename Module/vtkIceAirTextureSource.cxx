@@ -44,7 +44,8 @@ double BubbleAlpha(double d, double dx, double dy)
     return 0.0;
   }
   const double rim = std::exp(-std::pow((1.0 - d) / 0.18, 2.0));
-  const double highlight = std::exp(-((dx + 0.35) * (dx + 0.35) + (dy - 0.35) * (dy - 0.35)) / 0.02);
+  const double highlight =
+    std::exp(-((dx + 0.35) * (dx + 0.35) + (dy - 0.35) * (dy - 0.35)) / 0.02);
   return std::min(1.0, 0.15 + 0.75 * rim + 0.8 * highlight);
 }
 }
@@ -108,17 +109,19 @@ int vtkIceAirTextureSource::RequestData(
       }
       const double spread = style.Clustered ? 0.12 : 0.5;
       // Bubbles keep a margin from the tile edge so mip-mapping does not bleed between tiles.
-      const double cx = std::min(0.94, std::max(0.06,
-        (style.Clustered ? clusterX : 0.5) + spread * (2.0 * uniform() - 1.0)));
-      const double cy = std::min(0.94, std::max(0.06,
-        (style.Clustered ? clusterY : 0.5) + spread * (2.0 * uniform() - 1.0)));
-      const double r = style.MinRadius + (style.MaxRadius - style.MinRadius) * uniform() * uniform();
+      const double cx = std::min(0.94,
+        std::max(0.06, (style.Clustered ? clusterX : 0.5) + spread * (2.0 * uniform() - 1.0)));
+      const double cy = std::min(0.94,
+        std::max(0.06, (style.Clustered ? clusterY : 0.5) + spread * (2.0 * uniform() - 1.0)));
+      const double r =
+        style.MinRadius + (style.MaxRadius - style.MinRadius) * uniform() * uniform();
       const int radiusPixels = static_cast<int>(std::ceil(r * tile)) + 1;
       const int ci = static_cast<int>(cx * tile);
       const int cj = static_cast<int>(cy * tile);
       for (int j = std::max(0, cj - radiusPixels); j <= std::min(tile - 1, cj + radiusPixels); ++j)
       {
-        for (int i = std::max(0, ci - radiusPixels); i <= std::min(tile - 1, ci + radiusPixels); ++i)
+        for (int i = std::max(0, ci - radiusPixels); i <= std::min(tile - 1, ci + radiusPixels);
+             ++i)
         {
           const double dx = ((i + 0.5) / tile - cx) / r;
           const double dy = ((j + 0.5) / tile - cy) / r;

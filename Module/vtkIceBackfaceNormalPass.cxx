@@ -64,13 +64,13 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkIceBackfaceNormalPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkIceBackfaceNormalPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  vtkIceShaderSections::FillHook(fragmentShader, "Output",
-    vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Impl"));
-  vtkIceShaderSections::FillHook(fragmentShader, "CrackOutput",
-    vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Crack"));
+  vtkIceShaderSections::FillHook(
+    fragmentShader, "Output", vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Impl"));
+  vtkIceShaderSections::FillHook(
+    fragmentShader, "CrackOutput", vtkIceShaderSections::Get(vtkIceBackfaceNormalFS, "Crack"));
   return true;
 }
 

@@ -51,7 +51,8 @@ int vtkIceBlockSource::RequestData(
   // faces share the points along their common edges and corners.
   std::unordered_map<long long, vtkIdType> latticeToId;
   auto pointId = [&](const int ijk[3]) {
-    const long long key = (static_cast<long long>(ijk[0]) * (res + 1) + ijk[1]) * (res + 1) + ijk[2];
+    const long long key =
+      (static_cast<long long>(ijk[0]) * (res + 1) + ijk[1]) * (res + 1) + ijk[2];
     const auto found = latticeToId.find(key);
     if (found != latticeToId.end())
     {

@@ -32,8 +32,7 @@ void vtkIceCrackMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer*
 }
 
 //------------------------------------------------------------------------------
-void vtkIceCrackMapper::SetIceShaderParameters(
-  vtkShaderProgram* program, vtkRenderer*, vtkActor*)
+void vtkIceCrackMapper::SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer*, vtkActor*)
 {
   program->SetUniformi("iceCrackClip", this->ClipToInterval ? 1 : 0);
   program->SetUniformi("iceCrackDebug", this->DebugColor ? 1 : 0);

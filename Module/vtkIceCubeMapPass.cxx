@@ -124,8 +124,8 @@ std::vector<vtkProp*> SceneProps(vtkRenderer* renderer)
 
 // Changes whenever what the cube map at `center` shows may have changed; camera-following lights
 // and the camera itself are left out on purpose.
-size_t SceneSignature(vtkRenderer* renderer, const std::vector<vtkProp*>& scene,
-  const double center[3], int faceSize)
+size_t SceneSignature(
+  vtkRenderer* renderer, const std::vector<vtkProp*>& scene, const double center[3], int faceSize)
 {
   size_t seed = std::hash<int>()(faceSize);
   for (int i = 0; i < 3; ++i)
@@ -180,8 +180,8 @@ public:
 private:
   void Allocate(
     vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map, bool highDynamicRange);
-  void SetupCamera(int face, const double center[3], const std::vector<vtkProp*>& scene,
-    vtkCamera* mainCamera);
+  void SetupCamera(
+    int face, const double center[3], const std::vector<vtkProp*>& scene, vtkCamera* mainCamera);
 };
 
 //------------------------------------------------------------------------------
@@ -306,8 +306,7 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   vtkOpenGLState::ScopedglScissor scissorSaver(state);
   state->PushFramebufferBindings();
   this->FrameBuffer->Bind();
-  this->FrameBuffer->AddColorAttachment(
-    0, map.Texture, 0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
+  this->FrameBuffer->AddColorAttachment(0, map.Texture, 0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
   this->FrameBuffer->AddDepthAttachment();
   this->FrameBuffer->ActivateBuffer(0);
   this->FrameBuffer->Start(pass->FaceSize, pass->FaceSize);

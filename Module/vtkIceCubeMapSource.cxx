@@ -56,8 +56,8 @@ void SkyColor(const double d[3], double rgb[3])
 
   const double elevation = d[1];
   const double azimuth = std::atan2(d[2], d[0]);
-  const double ridge = 0.06 + 0.035 * std::sin(3.0 * azimuth + 0.5) + 0.02 * std::sin(7.0 * azimuth) +
-    0.01 * std::sin(19.0 * azimuth + 2.0);
+  const double ridge = 0.06 + 0.035 * std::sin(3.0 * azimuth + 0.5) +
+    0.02 * std::sin(7.0 * azimuth) + 0.01 * std::sin(19.0 * azimuth + 2.0);
 
   if (elevation >= 0.0)
   {
@@ -86,7 +86,8 @@ void SkyColor(const double d[3], double rgb[3])
     const double z = 2.0 * d[2] * t;
     const double footprint = 0.004 * t * t;
     auto square = [footprint](double u) {
-      return std::min(1.0, std::max(-1.0, std::sin(vtkMath::Pi() * u) / (vtkMath::Pi() * footprint)));
+      return std::min(
+        1.0, std::max(-1.0, std::sin(vtkMath::Pi() * u) / (vtkMath::Pi() * footprint)));
     };
     double ground[3];
     Mix(fieldA, fieldB, 0.5 + 0.5 * square(x) * square(z), ground);
@@ -131,12 +132,36 @@ void vtkIceCubeMapSource::TexelDirection(int face, int i, int j, int size, doubl
   const double t = 2.0 * (j + 0.5) / size - 1.0;
   switch (face)
   {
-    case 0: dir[0] = 1.0; dir[1] = -t; dir[2] = -s; break;
-    case 1: dir[0] = -1.0; dir[1] = -t; dir[2] = s; break;
-    case 2: dir[0] = s; dir[1] = 1.0; dir[2] = t; break;
-    case 3: dir[0] = s; dir[1] = -1.0; dir[2] = -t; break;
-    case 4: dir[0] = s; dir[1] = -t; dir[2] = 1.0; break;
-    default: dir[0] = -s; dir[1] = -t; dir[2] = -1.0; break;
+    case 0:
+      dir[0] = 1.0;
+      dir[1] = -t;
+      dir[2] = -s;
+      break;
+    case 1:
+      dir[0] = -1.0;
+      dir[1] = -t;
+      dir[2] = s;
+      break;
+    case 2:
+      dir[0] = s;
+      dir[1] = 1.0;
+      dir[2] = t;
+      break;
+    case 3:
+      dir[0] = s;
+      dir[1] = -1.0;
+      dir[2] = -t;
+      break;
+    case 4:
+      dir[0] = s;
+      dir[1] = -t;
+      dir[2] = 1.0;
+      break;
+    default:
+      dir[0] = -s;
+      dir[1] = -t;
+      dir[2] = -1.0;
+      break;
   }
 }
 

@@ -25,8 +25,8 @@ vtkStandardNewMacro(vtkIceDepthIntervalPass);
 namespace
 {
 // View-depth range of the props' bounding boxes, for the camera at `eye` looking along `direction`.
-bool FitDepthRange(const vtkRenderState* s, const double eye[3], const double direction[3],
-  double range[2])
+bool FitDepthRange(
+  const vtkRenderState* s, const double eye[3], const double direction[3], double range[2])
 {
   range[0] = VTK_DOUBLE_MAX;
   range[1] = -VTK_DOUBLE_MAX;
@@ -106,13 +106,13 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkIceDepthIntervalPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkIceDepthIntervalPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   vtkIceShaderSections::InsertDeclarations(
     fragmentShader, vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Dec"));
-  vtkIceShaderSections::FillHook(fragmentShader, "Output",
-    vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Impl"));
+  vtkIceShaderSections::FillHook(
+    fragmentShader, "Output", vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Impl"));
   return true;
 }
 

@@ -44,8 +44,8 @@ struct Cell
 };
 const Cell HorizontalCrossCells[NumberOfFaces] = { { 2, 1, false }, { 0, 1, false },
   { 1, 0, false }, { 1, 2, false }, { 1, 1, false }, { 3, 1, false } };
-const Cell VerticalCrossCells[NumberOfFaces] = { { 2, 1, false }, { 0, 1, false },
-  { 1, 0, false }, { 1, 2, false }, { 1, 1, false }, { 1, 3, true } };
+const Cell VerticalCrossCells[NumberOfFaces] = { { 2, 1, false }, { 0, 1, false }, { 1, 0, false },
+  { 1, 2, false }, { 1, 1, false }, { 1, 3, true } };
 
 // OpenImageIO's messages may span lines; VTK errors read best on one.
 std::string OneLine(std::string text)
@@ -220,8 +220,7 @@ bool MakeFacesPlan(const std::string& folder, Plan& plan, Failure& failure)
     }
     if (spec.width != spec.height)
     {
-      failure = { "Cube face '" + path + "' is " + Size(spec.width, spec.height) +
-          ", not square",
+      failure = { "Cube face '" + path + "' is " + Size(spec.width, spec.height) + ", not square",
         vtkErrorCode::FileFormatError };
       return false;
     }
@@ -397,8 +396,8 @@ void CopyFace(const Raster<T>& raster, int x0, int y0, int size, bool rotated, T
   {
     for (int i = 0; i < size; ++i)
     {
-      const T* texel = rotated ? raster.At(x0 + size - 1 - i, y0 + size - 1 - j)
-                               : raster.At(x0 + i, y0 + j);
+      const T* texel =
+        rotated ? raster.At(x0 + size - 1 - i, y0 + size - 1 - j) : raster.At(x0 + i, y0 + j);
       *out++ = texel[0];
       *out++ = texel[1];
       *out++ = texel[2];
@@ -557,11 +556,16 @@ const char* vtkIceEnvironmentReader::GetLayoutAsString(int layout)
 {
   switch (layout)
   {
-    case Faces: return "Faces";
-    case HorizontalCross: return "HorizontalCross";
-    case VerticalCross: return "VerticalCross";
-    case Equirectangular: return "Equirectangular";
-    default: return "Unknown";
+    case Faces:
+      return "Faces";
+    case HorizontalCross:
+      return "HorizontalCross";
+    case VerticalCross:
+      return "VerticalCross";
+    case Equirectangular:
+      return "Equirectangular";
+    default:
+      return "Unknown";
   }
 }
 

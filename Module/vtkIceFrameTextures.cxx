@@ -27,8 +27,8 @@ bool vtkIceFrameTextures::Bind(
 }
 
 //------------------------------------------------------------------------------
-bool vtkIceFrameTextures::BindScreen(vtkShaderProgram* program, vtkRenderer* renderer,
-  const char* sampler, vtkTextureObject* texture)
+bool vtkIceFrameTextures::BindScreen(
+  vtkShaderProgram* program, vtkRenderer* renderer, const char* sampler, vtkTextureObject* texture)
 {
   if (!this->Bind(program, sampler, texture))
   {

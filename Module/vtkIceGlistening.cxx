@@ -55,9 +55,9 @@ std::string Code(int lightComplexity, int lightCount)
   {
     for (int i = 0; i < lightCount; ++i)
     {
-      lights << "      iceGlisteningAddSceneLight(glisten, icePositionWCVSOutput, lightPositional" << i
-             << ", lightDirectionVC" << i << ", lightPositionVC" << i << ", lightAttenuation" << i
-             << ", lightConeAngle" << i << ", lightExponent" << i << ", lightColor" << i
+      lights << "      iceGlisteningAddSceneLight(glisten, icePositionWCVSOutput, lightPositional"
+             << i << ", lightDirectionVC" << i << ", lightPositionVC" << i << ", lightAttenuation"
+             << i << ", lightConeAngle" << i << ", lightExponent" << i << ", lightColor" << i
              << ", glistenSums);\n";
     }
   }

@@ -29,7 +29,7 @@ public:
   struct CrackLook
   {
     bool ClipToInterval;
-    bool Debug; // solid red, opaque
+    bool Debug;     // solid red, opaque
     bool Unclipped; // over everything: no depth test
     double Intensity;
     double BumpFrequency;

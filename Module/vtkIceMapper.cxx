@@ -95,21 +95,20 @@ double vtkIceMapper::InputExtent()
 {
   double bounds[6];
   this->PreparedInput->GetBounds(bounds);
-  return std::max(
-    { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-12 });
+  return std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-12 });
 }
 
 //------------------------------------------------------------------------------
 // The clamped floating-point properties: clamped to the ranges their header declares, NaN
 // refused with a warning (SetClamped).
-#define vtkIceClampedSetter(name)                                                                 \
-  void vtkIceMapper::Set##name(double value)                                                      \
-  {                                                                                               \
-    if (SetClamped(this, #name, value, this->Get##name##MinValue(), this->Get##name##MaxValue(), \
-          this->name))                                                                            \
-    {                                                                                             \
-      this->Modified();                                                                           \
-    }                                                                                             \
+#define vtkIceClampedSetter(name)                                                                  \
+  void vtkIceMapper::Set##name(double value)                                                       \
+  {                                                                                                \
+    if (SetClamped(this, #name, value, this->Get##name##MinValue(), this->Get##name##MaxValue(),   \
+          this->name))                                                                             \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
   }
 vtkIceClampedSetter(RefractionRatio)
 vtkIceClampedSetter(FresnelPower)
@@ -403,8 +402,8 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
 {
   const bool debugCracks =
     this->DebugView == DebugCracksUnclipped || this->DebugView == DebugCracksClipped;
-  const bool otherDebug = this->DebugView == DebugFrontDepth ||
-    this->DebugView == DebugBackDepth || this->DebugView == DebugAir;
+  const bool otherDebug = this->DebugView == DebugFrontDepth || this->DebugView == DebugBackDepth ||
+    this->DebugView == DebugAir;
   if (otherDebug || (!overlay && (!this->CracksPerturbRefraction || debugCracks)))
   {
     return;
@@ -469,8 +468,9 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCracks: " << this->NumberOfCracks << "\n";
   os << indent << "CrackSeed: " << this->CrackSeed << "\n";
   os << indent << "CrackIntensity: " << this->CrackIntensity << "\n";
-  os << indent << "CrackClipping: "
-     << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval") << "\n";
+  os << indent
+     << "CrackClipping: " << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval")
+     << "\n";
   os << indent << "CracksPerturbRefraction: " << (this->CracksPerturbRefraction ? "On" : "Off")
      << "\n";
   os << indent << "NumberOfAirPlanes: " << this->NumberOfAirPlanes << "\n";

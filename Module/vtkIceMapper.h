@@ -324,9 +324,9 @@ public:
    */
   enum FrameNeeds
   {
-    NeedsBackfaceNormals = 1,            // two-sided refraction (TwoSidedRefraction)
-    NeedsDepthIntervalBeforeScene = 2,   // depth debug views; cracks in the back-face normals
-    NeedsDepthIntervalForInterior = 4    // its own interval, right before its cracks and air
+    NeedsBackfaceNormals = 1,          // two-sided refraction (TwoSidedRefraction)
+    NeedsDepthIntervalBeforeScene = 2, // depth debug views; cracks in the back-face normals
+    NeedsDepthIntervalForInterior = 4  // its own interval, right before its cracks and air
   };
   int GetFrameNeeds();
 
@@ -363,7 +363,6 @@ protected:
   // The crack clipping the input allows: Geometry needs a closed surface (the inside is found by
   // ray casting); an open one is clipped to the depth interval instead, with one warning.
   int UsableCrackClipping();
-
 
   double RefractionRatio;
   double FresnelPower;

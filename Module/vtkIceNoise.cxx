@@ -44,8 +44,8 @@ double Lerp(double a, double b, double t)
 double GradientNoise(const double p[3], std::uint32_t seed)
 {
   static const double gradients[12][3] = { { 1, 1, 0 }, { -1, 1, 0 }, { 1, -1, 0 }, { -1, -1, 0 },
-    { 1, 0, 1 }, { -1, 0, 1 }, { 1, 0, -1 }, { -1, 0, -1 }, { 0, 1, 1 }, { 0, -1, 1 },
-    { 0, 1, -1 }, { 0, -1, -1 } };
+    { 1, 0, 1 }, { -1, 0, 1 }, { 1, 0, -1 }, { -1, 0, -1 }, { 0, 1, 1 }, { 0, -1, 1 }, { 0, 1, -1 },
+    { 0, -1, -1 } };
 
   int cell[3];
   double f[3];
@@ -98,7 +98,8 @@ double FractalNoise(const double p[3], std::uint32_t seed)
   double norm = 0.0;
   for (int octave = 0; octave < octaves; ++octave)
   {
-    const std::uint32_t octaveSeed = MixBits(seed + 0x632be5abU * static_cast<std::uint32_t>(octave));
+    const std::uint32_t octaveSeed =
+      MixBits(seed + 0x632be5abU * static_cast<std::uint32_t>(octave));
     double q[3];
     for (int c = 0; c < 3; ++c)
     {

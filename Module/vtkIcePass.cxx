@@ -35,7 +35,6 @@
 #include <array>
 #include <vector>
 
-
 vtkStandardNewMacro(vtkIcePass);
 vtkCxxSetObjectMacro(vtkIcePass, DelegatePass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkIcePass, CubeMapPass, vtkIceCubeMapPass);
@@ -55,8 +54,8 @@ public:
       this->Owner->RenderOverlays(s, this->IceState);
     }
   }
-  vtkIcePass* Owner = nullptr;               // not counted: the owner holds this step
-  const vtkRenderState* IceState = nullptr;  // the ice props, while the frame renders
+  vtkIcePass* Owner = nullptr;              // not counted: the owner holds this step
+  const vtkRenderState* IceState = nullptr; // the ice props, while the frame renders
 };
 vtkStandardNewMacro(vtkIceOverlayStep);
 
@@ -366,8 +365,8 @@ bool vtkIcePass::SetShaderParameters(
   if (this->FrameTextures->BindScreen(program, renderer, "iceDepthInterval", this->DepthInterval))
   {
     const double* range = this->DepthIntervalPass->GetDepthRange();
-    program->SetUniform2f(
-      "iceDepthRange", std::array<float, 2>{ static_cast<float>(range[0]), static_cast<float>(range[1]) }.data());
+    program->SetUniform2f("iceDepthRange",
+      std::array<float, 2>{ static_cast<float>(range[0]), static_cast<float>(range[1]) }.data());
   }
   if (vtkTextureObject* cubeMap = this->GetCubeMapOf(prop))
   {
@@ -393,10 +392,10 @@ void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->CubeMapPass->ReleaseGraphicsResources(w);
   }
-  for (vtkRenderPass* pass : { this->DelegatePass, this->DefaultDelegate,
-         static_cast<vtkRenderPass*>(this->OpaqueStep),
-         static_cast<vtkRenderPass*>(this->TranslucentStep),
-         static_cast<vtkRenderPass*>(this->VolumeStep) })
+  for (vtkRenderPass* pass :
+    { this->DelegatePass, this->DefaultDelegate, static_cast<vtkRenderPass*>(this->OpaqueStep),
+      static_cast<vtkRenderPass*>(this->TranslucentStep),
+      static_cast<vtkRenderPass*>(this->VolumeStep) })
   {
     if (pass)
     {

@@ -122,7 +122,6 @@ protected:
   vtkIcePass();
   ~vtkIcePass() override;
 
-
   // Renders the ice of `iceState`'s frame before the delegate's scene.
   void RenderIce(const vtkRenderState* iceState, int needs);
 

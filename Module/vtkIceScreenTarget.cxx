@@ -133,8 +133,8 @@ vtkIceScreenTarget::Drawing::Drawing(
   int x;
   int y;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  target.Prepare(static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow()), width, height,
-    components);
+  target.Prepare(
+    static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow()), width, height, components);
   target.Bind(this->State);
   this->State->vtkglEnable(GL_DEPTH_TEST);
   this->State->vtkglDisable(GL_BLEND);

@@ -6,7 +6,7 @@
 #define vtkIceScreenTarget_h
 
 #include "vtkIceScreenRegion.h" // for Tracker
-#include "vtkOpenGLState.h"    // for Drawing
+#include "vtkOpenGLState.h"     // for Drawing
 #include "vtkSmartPointer.h"
 
 class vtkOpenGLFramebufferObject;
@@ -81,7 +81,7 @@ private:
   vtkSmartPointer<vtkTextureObject> DepthTexture;
   int Width = 0;
   int Height = 0;
-  bool Attached = false; // the textures are attached to FrameBuffer
+  bool Attached = false;               // the textures are attached to FrameBuffer
   vtkIceScreenRegion::Tracker Cleared; // what of ColorTexture may not hold the clear colour
   Drawing* Active = nullptr;
 

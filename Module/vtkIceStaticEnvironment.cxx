@@ -49,13 +49,13 @@ vtkTexture* vtkIceStaticEnvironment::Select(vtkRenderer* renderer, vtkObject* ow
   }
   if (!this->Warned)
   {
-    vtkWarningWithObjectMacro(owner,
-      << (!env          ? "The renderer has no environment texture"
-             : !cubeMap ? "The renderer's environment texture is not a cube map"
-                        : "The renderer's environment cube map has faces without "
-                          "an image (did its reader fail?)")
-      << "; the ice reflects a built-in sky. Set a vtkTexture with CubeMapOn() "
-         "with vtkRenderer::SetEnvironmentTexture.");
+    vtkWarningWithObjectMacro(
+      owner, << (!env          ? "The renderer has no environment texture"
+                    : !cubeMap ? "The renderer's environment texture is not a cube map"
+                               : "The renderer's environment cube map has faces without "
+                                 "an image (did its reader fail?)")
+             << "; the ice reflects a built-in sky. Set a vtkTexture with CubeMapOn() "
+                "with vtkRenderer::SetEnvironmentTexture.");
     this->Warned = true;
   }
   if (!this->Fallback)

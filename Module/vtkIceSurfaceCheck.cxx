@@ -146,8 +146,8 @@ std::string FindInputProblem(vtkPolyData* input)
   input->GetPoints()->GetBounds(bounds);
   if (bounds[0] == bounds[1] && bounds[2] == bounds[3] && bounds[4] == bounds[5])
   {
-    problem << "Input has no extent: all its " << points << " points are at (" << bounds[0]
-            << ", " << bounds[2] << ", " << bounds[4] << "); it is not drawn.";
+    problem << "Input has no extent: all its " << points << " points are at (" << bounds[0] << ", "
+            << bounds[2] << ", " << bounds[4] << "); it is not drawn.";
     return problem.str();
   }
   return std::string();
@@ -230,8 +230,7 @@ vtkIdType CountOpenEdges(vtkPolyData* surface)
   vtkPolyData* merged = merge->GetOutput();
 
   std::vector<std::pair<vtkIdType, vtkIdType>> edges;
-  auto add = [&edges](vtkIdType a, vtkIdType b)
-  {
+  auto add = [&edges](vtkIdType a, vtkIdType b) {
     if (a != b)
     {
       edges.emplace_back(std::min(a, b), std::max(a, b));

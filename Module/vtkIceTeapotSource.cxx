@@ -18,6 +18,7 @@ vtkStandardNewMacro(vtkIceTeapotSource);
 namespace
 {
 // The 306 control points of the Newell teapot (public-domain data, z up).
+// clang-format off
 const double TeapotPoints[306][3] = {
   { 1.4, 0.0, 2.4 }, { 1.4, -0.784, 2.4 }, { 0.784, -1.4, 2.4 },
   { 0.0, -1.4, 2.4 }, { 1.3375, 0.0, 2.53125 }, { 1.3375, -0.749, 2.53125 },
@@ -159,6 +160,7 @@ const int TeapotPatches[32][16] = {
   { 269, 269, 269, 269, 290, 297, 298, 299, 287, 294, 295, 296, 284, 291, 292, 293 },
   { 269, 269, 269, 269, 299, 304, 305, 278, 296, 302, 303, 274, 293, 300, 301, 270 },
 };
+// clang-format on
 
 // Cubic Bernstein basis b and its derivative db at t.
 void Bernstein(double t, double b[4], double db[4])

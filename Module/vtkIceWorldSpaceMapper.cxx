@@ -195,7 +195,8 @@ void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vt
   {
     const std::string type = (*it)[1];
     const std::string name = (*it)[2];
-    declarations += "in " + type + " " + name + "VSOutput[];\nout " + type + " " + name + "GSOutput;\n";
+    declarations +=
+      "in " + type + " " + name + "VSOutput[];\nout " + type + " " + name + "GSOutput;\n";
     copies += name + "GSOutput = " + name + "VSOutput[i];\n";
   }
   std::string source = gs->GetSource();
@@ -270,8 +271,8 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
   double* direction = camera->GetDirectionOfProjection();
   const float eyeWC[3] = { static_cast<float>(eye[0]), static_cast<float>(eye[1]),
     static_cast<float>(eye[2]) };
-  const float directionWC[3] = { static_cast<float>(direction[0]),
-    static_cast<float>(direction[1]), static_cast<float>(direction[2]) };
+  const float directionWC[3] = { static_cast<float>(direction[0]), static_cast<float>(direction[1]),
+    static_cast<float>(direction[2]) };
   program->SetUniform3f("iceCameraWC", eyeWC);
   program->SetUniform3f("iceViewDirectionWC", directionWC);
   program->SetUniformi("iceParallelProjection", camera->GetParallelProjection() ? 1 : 0);
@@ -280,8 +281,8 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
   vtkMatrix4x4* projection =
     camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0);
   const float depthToWindow[4] = { static_cast<float>(projection->GetElement(2, 2)),
-    static_cast<float>(projection->GetElement(2, 3)),
-    camera->GetParallelProjection() ? 1.0f : 0.0f, 0.0f };
+    static_cast<float>(projection->GetElement(2, 3)), camera->GetParallelProjection() ? 1.0f : 0.0f,
+    0.0f };
   program->SetUniform4f("iceDepthToWindow", depthToWindow);
 
   this->SetIceShaderParameters(program, ren, act);

@@ -16,8 +16,8 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkSmartPointer.h" // for members
 
-#include <string>  // for ReplaceIceShaderValues
-#include <vector>  // for members
+#include <string> // for ReplaceIceShaderValues
+#include <vector> // for members
 
 struct vtkIceShaderParts;
 class vtkDataSet;
@@ -87,7 +87,8 @@ protected:
   /**
    * Subclasses set their uniforms; the world-space ones are already set.
    */
-  virtual void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) = 0;
+  virtual void SetIceShaderParameters(
+    vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) = 0;
 
   // Adds to the geometry shader VTK uses for edges and wide lines, if any, the copying of every
   // ice varying declared in `vs` (out TYPE iceNameVSOutput).

@@ -89,16 +89,16 @@ std::string Csv(const std::vector<Group>& groups, const Machine& machine)
           << "," << Fixed(c.Stats.P75, 3) << "," << Fixed(c.Stats.Min, 3) << ","
           << Fixed(c.Stats.Max, 3) << "," << Fixed(c.Stats.Mean, 3) << ","
           << Fixed(1000.0 / c.Stats.Median, 2) << "," << Fixed(g.Configurations[0].Stats.Median, 3)
-          << "," << Fixed(c.Ratio, 4) << "," << Fixed(c.CpuMedian, 3) << ","
-          << Fixed(c.CpuRatio, 4) << "," << Fixed(c.CubeFacesPerFrame, 3) << ",\""
-          << machine.Renderer << "\"," << machine.MultiSamples << "\n";
+          << "," << Fixed(c.Ratio, 4) << "," << Fixed(c.CpuMedian, 3) << "," << Fixed(c.CpuRatio, 4)
+          << "," << Fixed(c.CubeFacesPerFrame, 3) << ",\"" << machine.Renderer << "\","
+          << machine.MultiSamples << "\n";
     }
   }
   return out.str();
 }
 
-std::string Markdown(const std::vector<Group>& groups,
-  const std::vector<IceBench::Target>& targets, const Machine& machine, int frames)
+std::string Markdown(const std::vector<Group>& groups, const std::vector<IceBench::Target>& targets,
+  const Machine& machine, int frames)
 {
   std::ostringstream out;
   out << "| machine | |\n|---|---|\n";
@@ -168,9 +168,8 @@ void IceBench::PrintGroup(std::ostream& out, const Group& g)
     out << "   " << std::left << std::setw(42) << c.Label << std::right << std::setw(10)
         << Fixed(c.Stats.Median, 2) << std::setw(18)
         << (Fixed(c.Stats.P25, 2) + " - " + Fixed(c.Stats.P75, 2)) << std::setw(9)
-        << Fixed(1000.0 / c.Stats.Median, 1) << std::setw(8) << Fixed(c.Ratio, 2)
-        << std::setw(10) << Fixed(c.CpuMedian, 1) << std::setw(10) << Fixed(c.CpuRatio, 2)
-        << "\n";
+        << Fixed(1000.0 / c.Stats.Median, 1) << std::setw(8) << Fixed(c.Ratio, 2) << std::setw(10)
+        << Fixed(c.CpuMedian, 1) << std::setw(10) << Fixed(c.CpuRatio, 2) << "\n";
   }
 }
 

@@ -49,10 +49,10 @@ std::uint64_t FileSize(std::ifstream& in)
 // The PLY scalar types by their names in the header; 0 for an unknown name.
 int ScalarSize(const std::string& type)
 {
-  static const std::pair<const char*, int> types[] = { { "char", 1 }, { "int8", 1 },
-    { "uchar", 1 }, { "uint8", 1 }, { "short", 2 }, { "int16", 2 }, { "ushort", 2 },
-    { "uint16", 2 }, { "int", 4 }, { "int32", 4 }, { "uint", 4 }, { "uint32", 4 },
-    { "float", 4 }, { "float32", 4 }, { "double", 8 }, { "float64", 8 } };
+  static const std::pair<const char*, int> types[] = { { "char", 1 }, { "int8", 1 }, { "uchar", 1 },
+    { "uint8", 1 }, { "short", 2 }, { "int16", 2 }, { "ushort", 2 }, { "uint16", 2 }, { "int", 4 },
+    { "int32", 4 }, { "uint", 4 }, { "uint32", 4 }, { "float", 4 }, { "float32", 4 },
+    { "double", 8 }, { "float64", 8 } };
   for (const auto& t : types)
   {
     if (type == t.first)
@@ -115,12 +115,20 @@ bool ReadBinary(std::ifstream& in, const std::string& type, Format format, doubl
   const bool isSigned = type[0] != 'u';
   switch (size)
   {
-    case 1: value = isSigned ? as(std::int8_t()) : as(std::uint8_t()); break;
-    case 2: value = isSigned ? as(std::int16_t()) : as(std::uint16_t()); break;
-    case 4:
-      value = !IsIntegerType(type) ? as(float()) : isSigned ? as(std::int32_t()) : as(std::uint32_t());
+    case 1:
+      value = isSigned ? as(std::int8_t()) : as(std::uint8_t());
       break;
-    default: value = as(double()); break;
+    case 2:
+      value = isSigned ? as(std::int16_t()) : as(std::uint16_t());
+      break;
+    case 4:
+      value = !IsIntegerType(type) ? as(float())
+        : isSigned                 ? as(std::int32_t())
+                                   : as(std::uint32_t());
+      break;
+    default:
+      value = as(double());
+      break;
   }
   return true;
 }
@@ -148,7 +156,8 @@ public:
     }
     for (const Element& element : this->Elements)
     {
-      problem = this->Format_ == Format::Ascii ? this->WalkAscii(element) : this->WalkBinary(element);
+      problem =
+        this->Format_ == Format::Ascii ? this->WalkAscii(element) : this->WalkBinary(element);
       if (!problem.empty())
       {
         return "PLY file " + Quote(this->Path) + " is cut off or corrupt: " + problem;
@@ -304,8 +313,8 @@ private:
       if (fixedSize != 0 && element.Count > left / fixedSize)
       {
         std::ostringstream problem;
-        problem << "the header declares " << element.Count << " " << element.Name
-                << " elements of " << fixedSize << " bytes, but " << left << " bytes are left";
+        problem << "the header declares " << element.Count << " " << element.Name << " elements of "
+                << fixedSize << " bytes, but " << left << " bytes are left";
         return problem.str();
       }
       this->In.seekg(static_cast<std::streamoff>(element.Count * fixedSize), std::ios::cur);
@@ -403,7 +412,11 @@ std::string Printable(const std::string& text, std::size_t limit)
     const unsigned char c = static_cast<unsigned char>(text[i]);
     // Valid UTF-8 sequences stay (file names may be in any language); control characters and
     // stray bytes, which could drive the terminal, do not.
-    std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    std::size_t length = c < 0x80 ? 1
+      : (c >> 5) == 0x6           ? 2
+      : (c >> 4) == 0xE           ? 3
+      : (c >> 3) == 0x1E          ? 4
+                                  : 0;
     for (std::size_t k = 1; k < length; ++k)
     {
       if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) >> 6) != 0x2)

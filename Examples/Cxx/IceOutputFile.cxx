@@ -142,8 +142,7 @@ std::string CheckWritable(const std::string& path)
   }
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
   {
-    return "cannot write " + Quote(path) + ": folder " + Quote(folder) + ": " +
-      SystemError(errno);
+    return "cannot write " + Quote(path) + ": folder " + Quote(folder) + ": " + SystemError(errno);
   }
   return std::string();
 }
@@ -182,8 +181,8 @@ std::string Write(const std::string& path, const std::string& data)
   sigprocmask(SIG_SETMASK, &previous, nullptr);
   if (fd < 0)
   {
-    return "cannot write " + Quote(path) + ": cannot create a file in " +
-      Quote(Folder(target)) + ": " + SystemError(createError);
+    return "cannot write " + Quote(path) + ": cannot create a file in " + Quote(Folder(target)) +
+      ": " + SystemError(createError);
   }
 
   // The new file gets the old one's permissions, or those a new file would get (mkstemp's are
@@ -261,9 +260,8 @@ std::string WriteImage(const std::string& path, vtkImageData* image)
   }
   writer->SetInputData(image);
   writer->Write();
-  vtkUnsignedCharArray* bytes = format == "png"
-    ? vtkPNGWriter::SafeDownCast(writer)->GetResult()
-    : vtkJPEGWriter::SafeDownCast(writer)->GetResult();
+  vtkUnsignedCharArray* bytes = format == "png" ? vtkPNGWriter::SafeDownCast(writer)->GetResult()
+                                                : vtkJPEGWriter::SafeDownCast(writer)->GetResult();
   if (writer->GetErrorCode() != 0 || !bytes || bytes->GetNumberOfValues() == 0)
   {
     return "cannot encode the image for " + Quote(path);

@@ -231,10 +231,9 @@ vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(vtkAlgorithm* reader, std::str
   }
   if (WIFSIGNALED(status) || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || answer.empty())
   {
-    error = WIFSIGNALED(status)
-      ? "the reader crashed on it (" + std::string(::strsignal(WTERMSIG(status))) +
-        "): the file is broken"
-      : "the reader failed on it: the file is broken";
+    error = WIFSIGNALED(status) ? "the reader crashed on it (" +
+        std::string(::strsignal(WTERMSIG(status))) + "): the file is broken"
+                                : "the reader failed on it: the file is broken";
     return nullptr;
   }
   if (answer[0] == 'E')

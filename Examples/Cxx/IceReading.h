@@ -18,9 +18,10 @@ namespace IceReading
 bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error);
 
 // Runs `reader` (whose output 0 is polydata) in a child process and returns a copy of its
-// output, which passed vtkIceMapper::CheckInput. Call it before the program starts threads. VTK 9.1's readers trust their files: a cut legacy .vtk file crashes vtkPolyDataReader,
-// a cut PLY vtkPLYReader. A crash, an abort or running out of memory in the child becomes
-// nullptr and a one-line `error`, as does a message of the reader's.
+// output, which passed vtkIceMapper::CheckInput. Call it before the program starts threads.
+// VTK 9.1's readers trust their files: a cut legacy .vtk file crashes vtkPolyDataReader, a cut PLY
+// vtkPLYReader. A crash, an abort or running out of memory in the child becomes nullptr and a
+// one-line `error`, as does a message of the reader's.
 vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(vtkAlgorithm* reader, std::string& error);
 }
 

@@ -58,7 +58,8 @@ std::string Extension(const std::string& path)
 {
   const std::string::size_type dot = path.rfind('.');
   std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(
+    ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -125,7 +126,8 @@ vtkSmartPointer<vtkAlgorithm> ModelReader(const std::string& path, std::string& 
   }
   else
   {
-    error = "unknown model '" + IceModelFile::Printable(path) + "' (use teapot, block, sphere or a .vtp, .vtk, .stl, .obj or .ply file)";
+    error = "unknown model '" + IceModelFile::Printable(path) +
+      "' (use teapot, block, sphere or a .vtp, .vtk, .stl, .obj or .ply file)";
   }
   return reader;
 }
@@ -144,8 +146,8 @@ vtkSmartPointer<vtkPolyData> Normalize(vtkPolyData* model)
   }
   vtkNew<vtkTransform> transform;
   transform->Scale(2.0 / extent, 2.0 / extent, 2.0 / extent);
-  transform->Translate(-0.5 * (bounds[0] + bounds[1]), -0.5 * (bounds[2] + bounds[3]),
-    -0.5 * (bounds[4] + bounds[5]));
+  transform->Translate(
+    -0.5 * (bounds[0] + bounds[1]), -0.5 * (bounds[2] + bounds[3]), -0.5 * (bounds[4] + bounds[5]));
   vtkNew<vtkTransformPolyDataFilter> apply;
   apply->SetInputData(model);
   apply->SetTransform(transform);
@@ -193,7 +195,8 @@ void AddLandscape(vtkRenderer* renderer, double groundHeight)
   // Rocks: ice-block shapes, rounder and rougher, in stone colours.
   const double rocks[][5] = { // x, z, size, seed, shade
     { -3.5, -2.0, 1.4, 3, 0.55 }, { 3.8, -3.5, 2.2, 5, 0.45 }, { -1.5, 4.5, 1.0, 8, 0.6 },
-    { 5.0, 2.5, 1.2, 11, 0.5 }, { -6.0, 3.0, 2.0, 13, 0.4 } };
+    { 5.0, 2.5, 1.2, 11, 0.5 }, { -6.0, 3.0, 2.0, 13, 0.4 }
+  };
   for (const auto& rock : rocks)
   {
     vtkNew<vtkIceBlockSource> shape;
@@ -212,8 +215,9 @@ void AddLandscape(vtkRenderer* renderer, double groundHeight)
 
   // Pine trees: a trunk and a cone.
   const double trees[][3] = { // x, z, height
-    { -2.0, -5.5, 3.0 }, { 1.0, -7.0, 3.6 }, { 6.5, -1.0, 2.6 }, { -5.0, -0.5, 2.8 }, { 2.5, 5.5, 3.2 },
-    { -4.0, 6.5, 3.4 } };
+    { -2.0, -5.5, 3.0 }, { 1.0, -7.0, 3.6 }, { 6.5, -1.0, 2.6 }, { -5.0, -0.5, 2.8 },
+    { 2.5, 5.5, 3.2 }, { -4.0, 6.5, 3.4 }
+  };
   for (const auto& tree : trees)
   {
     vtkNew<vtkCylinderSource> trunkShape;
@@ -329,8 +333,8 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
   {
     vtkNew<vtkIceCubeMapSource> source;
     source->SetFaceSize(environment == "sky" ? 512 : 256);
-    source->SetPattern(environment == "sky" ? vtkIceCubeMapSource::Sky
-                                            : vtkIceCubeMapSource::DirectionTest);
+    source->SetPattern(
+      environment == "sky" ? vtkIceCubeMapSource::Sky : vtkIceCubeMapSource::DirectionTest);
     source->ConfigureTexture(texture);
     return texture;
   }

@@ -59,8 +59,7 @@ template <typename Environment>
 Vec3 Shade(const Vec3& e, const Vec3& nFront, const Vec3* nBack, const Material& material,
   const Environment& environment)
 {
-  const Vec3 nRefract =
-    nBack ? BlendNormals(nFront, *nBack, material.BackNormalWeight) : nFront;
+  const Vec3 nRefract = nBack ? BlendNormals(nFront, *nBack, material.BackNormalWeight) : nFront;
   const Vec3 refracted = environment(Refract(e, nRefract, material.RefractionRatio));
   const Vec3 reflected = environment(Reflect(e, nFront));
   const double f = std::min(1.0, std::max(0.0, Fresnel(e, nFront, material.FresnelPower)));

@@ -46,8 +46,7 @@ using IsTextureFunction = GLboolean (*)(GLuint);
 IsTextureFunction IsTexture()
 {
   using GetProcAddress = void (*(*)(const GLubyte*))();
-  static IsTextureFunction function = []
-  {
+  static IsTextureFunction function = [] {
     auto get = reinterpret_cast<GetProcAddress>(dlsym(RTLD_DEFAULT, "glXGetProcAddressARB"));
     auto found = get
       ? reinterpret_cast<IsTextureFunction>(get(reinterpret_cast<const GLubyte*>("glIsTexture")))
@@ -180,8 +179,7 @@ GLCensus TakeGLCensus(vtkRenderWindow* window)
   for (GLuint name = 1; name <= limit; ++name)
   {
     bool used = false;
-    auto count = [&used](GLboolean exists, int& counter)
-    {
+    auto count = [&used](GLboolean exists, int& counter) {
       if (exists)
       {
         ++counter;

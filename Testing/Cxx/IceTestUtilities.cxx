@@ -383,8 +383,8 @@ bool ReportInvisibility(const std::string& name, const Invisibility& result)
 {
   const Stats& invisible = result.Invisible;
   const Stats& visible = result.Visible;
-  const bool ok = invisible.Count > 20000 && invisible.Mean <= 1.0 && invisible.P99 <= 4.0 &&
-    visible.Mean >= 5.0;
+  const bool ok =
+    invisible.Count > 20000 && invisible.Mean <= 1.0 && invisible.P99 <= 4.0 && visible.Mean >= 5.0;
   std::cout << (ok ? "ok   " : "FAIL ") << name << ": eta 1: " << invisible.Count
             << " interior pixels differ from the skybox by mean " << invisible.Mean << "/255, p99 "
             << invisible.P99 << "/255, max " << invisible.Max << "/255; default ice: mean "

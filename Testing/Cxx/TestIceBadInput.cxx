@@ -385,15 +385,13 @@ bool CheckParameters()
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(48);
   sphere->SetPhiResolution(24);
-  const DrawnResult r = RenderDrawn(sphere,
-    [](vtkIceMapper* m)
-    {
-      m->SetRefractionRatio(-5.0);
-      m->SetBackNormalWeight(7.0);
-      m->SetFresnelPower(1e300);
-      m->SetNumberOfCracks(1000000);
-      m->SetCrackIntensity(1e9);
-    });
+  const DrawnResult r = RenderDrawn(sphere, [](vtkIceMapper* m) {
+    m->SetRefractionRatio(-5.0);
+    m->SetBackNormalWeight(7.0);
+    m->SetFresnelPower(1e300);
+    m->SetNumberOfCracks(1000000);
+    m->SetCrackIntensity(1e9);
+  });
   ok = Expect(r.Errors + r.Warnings == 0 && r.ConeDrawn && r.IcePixels > 1000 && r.GLErrors.empty(),
          "clamped extremes (eta, a, Fresnel power, 1000 cracks, crack intensity) render: " +
            r.Describe() + "; first frame " + std::to_string(r.Seconds) + " s") &&

@@ -58,12 +58,15 @@ bool Clipping()
   {
     scene.Mapper->SetDebugView(view);
     const IceTest::Image image = scene.Render();
-    Count(image, silhouette, [&image](size_t p) { return IsRed(&image.RGB[3 * p]); }, inside, outside);
+    Count(
+      image, silhouette, [&image](size_t p) { return IsRed(&image.RGB[3 * p]); }, inside, outside);
     const bool clipped = view == vtkIceMapper::DebugCracksClipped;
     std::cout << (clipped ? "clipped" : "unclipped") << " cracks in red: " << inside
               << " pixels inside the silhouette, " << outside << " outside\n";
-    ok = Expect(clipped ? (outside == 0 && inside > 2000) : outside > 500,
-           clipped ? "clipped cracks stay inside the ice and show" : "unclipped cracks stick out") && ok;
+    ok =
+      Expect(clipped ? (outside == 0 && inside > 2000) : outside > 500,
+        clipped ? "clipped cracks stay inside the ice and show" : "unclipped cracks stick out") &&
+      ok;
   }
 
   scene.Mapper->SetDebugView(vtkIceMapper::DebugOff);
@@ -71,7 +74,8 @@ bool Clipping()
   const IceTest::Image clear = scene.Render();
   scene.Mapper->SetNumberOfCracks(2);
   const IceTest::Image cracked = scene.Render();
-  Count(cracked, silhouette,
+  Count(
+    cracked, silhouette,
     [&](size_t p) { return IceTest::PixelDifference(&clear.RGB[3 * p], &cracked.RGB[3 * p]) > 8; },
     inside, outside);
   std::cout << "highlights change " << inside << " pixels inside the ice, " << outside
@@ -114,7 +118,8 @@ bool PassCount()
     std::cout << cracks << " cracks: " << framePasses << " depth passes and " << frameDraws
               << " crack draw per frame\n";
     ok = Expect(framePasses == 2 && frameDraws == 1,
-           std::to_string(cracks) + " cracks cost two depth passes and one draw") && ok;
+           std::to_string(cracks) + " cracks cost two depth passes and one draw") &&
+      ok;
   }
   return ok;
 }

@@ -100,9 +100,8 @@ int TestIceCubeMapHDR(int, char*[])
   const double dynamicUnit = RenderIce(true, 1.0f);
   const bool ok = std::abs(dynamicBright - staticBright) <= 2.0 &&
     std::abs(dynamicUnit - staticUnit) <= 2.0 && staticBright >= staticUnit + 40.0;
-  std::cout << (ok ? "ok   " : "FAIL ")
-            << "ice tinted 0.2, mean red: sky of 4.0: static " << staticBright << "/255, dynamic "
-            << dynamicBright << "/255; sky of 1.0: static " << staticUnit << "/255, dynamic "
-            << dynamicUnit << "/255\n";
+  std::cout << (ok ? "ok   " : "FAIL ") << "ice tinted 0.2, mean red: sky of 4.0: static "
+            << staticBright << "/255, dynamic " << dynamicBright << "/255; sky of 1.0: static "
+            << staticUnit << "/255, dynamic " << dynamicUnit << "/255\n";
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,8 +1,8 @@
-// vtkIceCubeMapPass: an ice sphere inside a room whose six walls have six colours, each wall in four
-// quadrants of different brightness. Seen from the sphere's centre the walls fill the cube map face
-// by face, so the GLM reference with "colour of the wall quadrant the direction points at" must
-// match every interior pixel whose refracted and reflected directions are clear of the edges: a
-// flipped or rotated face, the ice in its own cube map, or bad frustum culling would put wrong
+// vtkIceCubeMapPass: an ice sphere inside a room whose six walls have six colours, each wall in
+// four quadrants of different brightness. Seen from the sphere's centre the walls fill the cube map
+// face by face, so the GLM reference with "colour of the wall quadrant the direction points at"
+// must match every interior pixel whose refracted and reflected directions are clear of the edges:
+// a flipped or rotated face, the ice in its own cube map, or bad frustum culling would put wrong
 // colours at those positions. Then: with eta 1 and no
 // reflection the ice nearly vanishes in front of distant walls; and the update modes re-render
 // exactly when they should (counted face renders).
@@ -100,8 +100,8 @@ struct Room
         wall = vtkSmartPointer<vtkActor>::New();
         wall->SetMapper(mapper);
         const double shade = QuadrantShade(uPositive, vPositive);
-        wall->GetProperty()->SetColor(shade * WallColors[face][0], shade * WallColors[face][1],
-          shade * WallColors[face][2]);
+        wall->GetProperty()->SetColor(
+          shade * WallColors[face][0], shade * WallColors[face][1], shade * WallColors[face][2]);
         wall->GetProperty()->LightingOff();
         this->Renderer->AddActor(wall);
       }
@@ -136,8 +136,8 @@ bool Positions(bool frustumCulling)
   room.CubeMapPass->SetFrustumCulling(frustumCulling);
   room.Window->Render();
   const vtkIceOpticsReference::Material material;
-  const IceTest::Stats stats = IceTest::CompareSphereWithReference(room.Renderer,
-    IceTest::Capture(room.Window), room.Center, 1.0, material, WallColor, true);
+  const IceTest::Stats stats = IceTest::CompareSphereWithReference(
+    room.Renderer, IceTest::Capture(room.Window), room.Center, 1.0, material, WallColor, true);
   std::cout << "culled props " << room.CubeMapPass->GetNumberOfCulledProps() << "\n";
   const bool culledAsExpected = frustumCulling ? room.CubeMapPass->GetNumberOfCulledProps() > 0
                                                : room.CubeMapPass->GetNumberOfCulledProps() == 0;
@@ -158,8 +158,7 @@ bool NearlyInvisible()
   room.Ice->VisibilityOn();
   room.Window->Render();
   const IceTest::Image ice = IceTest::Capture(room.Window);
-  const std::vector<bool> interior =
-    IceTest::SphereInterior(room.Renderer, room.Center, 1.0, 3);
+  const std::vector<bool> interior = IceTest::SphereInterior(room.Renderer, room.Center, 1.0, 3);
   std::vector<double> differences;
   for (size_t p = 0; p < interior.size(); ++p)
   {
@@ -190,22 +189,26 @@ bool UpdateModes()
     vtkIceCubeMapPass* pass = room.CubeMapPass;
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 6, "on change: first frame renders 6 faces",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
     room.Window->Render();
     room.Renderer->GetActiveCamera()->Azimuth(30.0);
     room.Renderer->ResetCameraClippingRange();
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 6,
            "on change: a still scene and a moving camera render nothing",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
     room.Walls[0][0]->SetPosition(0.5, 0.0, 0.0);
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 12, "on change: moving a wall re-renders",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
     room.Walls[2][1]->GetProperty()->SetColor(1.0, 1.0, 1.0);
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 18, "on change: recolouring a wall re-renders",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
   }
   {
     Room room(5.0);
@@ -215,12 +218,14 @@ bool UpdateModes()
     room.Walls[0][0]->SetPosition(0.5, 0.0, 0.0);
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 6, "manual: a change renders nothing",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
     pass->Update();
     room.Window->Render();
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 12, "manual: Update() renders once",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
   }
   {
     Room room(5.0);
@@ -231,11 +236,13 @@ bool UpdateModes()
       room.Window->Render();
     }
     ok = Expect(pass->GetNumberOfFaceRenders() == 18, "every frame: 3 frames render 18 faces",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
     pass->SetFacesPerFrame(2);
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 20, "time slicing: 2 faces per frame",
-           pass->GetNumberOfFaceRenders()) && ok;
+           pass->GetNumberOfFaceRenders()) &&
+      ok;
   }
   return ok;
 }

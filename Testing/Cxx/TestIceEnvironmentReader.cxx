@@ -61,8 +61,8 @@ bool WriteImage(const std::string& path, int width, int height, int channels, OI
   const bool ok = out && out->open(path, spec) && out->write_image(type, pixels) && out->close();
   if (!ok)
   {
-    std::cerr << "cannot write " << path << ": "
-              << (out ? out->geterror() : OIIO::geterror()) << "\n";
+    std::cerr << "cannot write " << path << ": " << (out ? out->geterror() : OIIO::geterror())
+              << "\n";
   }
   return ok;
 }
@@ -103,7 +103,8 @@ bool WriteFaces(const Faces& faces, const std::string& folder)
   for (int face = 0; face < 6; ++face)
   {
     ok = WriteImage(folder + "/" + FaceNames[face] + ".png", faces.Size, faces.Size, 3,
-           OIIO::TypeDesc::UINT8, faces.RGB[face].data()) && ok;
+           OIIO::TypeDesc::UINT8, faces.RGB[face].data()) &&
+      ok;
   }
   return ok;
 }
@@ -320,7 +321,8 @@ bool CheckExact(vtkIceEnvironmentReader* reader, const std::string& name)
       worst = std::max(worst, static_cast<int>(std::abs(read - expected)));
     }
   });
-  return Report(worst <= 1, name + ": every texel within " + std::to_string(worst) +
+  return Report(worst <= 1,
+    name + ": every texel within " + std::to_string(worst) +
       "/255 of the pattern at its direction");
 }
 
@@ -462,8 +464,9 @@ int TestIceEnvironmentReader(int argc, char* argv[])
            std::to_string(verticalPairs) + " face-to-face pixel pairs within 1.5 texels)") &&
     ok;
   const std::vector<unsigned char> horizontal = MakeCross(faces, HorizontalCross, 4, 3, 3);
-  ok = WriteImage(temp + "/hcross.png", 4 * size, 3 * size, 3, OIIO::TypeDesc::UINT8,
-         horizontal.data()) && ok;
+  ok = WriteImage(
+         temp + "/hcross.png", 4 * size, 3 * size, 3, OIIO::TypeDesc::UINT8, horizontal.data()) &&
+    ok;
   if (ReadAs(reader, temp + "/hcross.png", vtkIceEnvironmentReader::HorizontalCross, size,
         VTK_UNSIGNED_CHAR, "horizontal cross PNG"))
   {
@@ -474,8 +477,9 @@ int TestIceEnvironmentReader(int argc, char* argv[])
     ok = false;
   }
   const std::vector<unsigned char> vertical = MakeCross(faces, VerticalCross, 3, 4, 4);
-  ok = WriteImage(temp + "/vcross.png", 3 * size, 4 * size, 4, OIIO::TypeDesc::UINT8,
-         vertical.data()) && ok;
+  ok = WriteImage(
+         temp + "/vcross.png", 3 * size, 4 * size, 4, OIIO::TypeDesc::UINT8, vertical.data()) &&
+    ok;
   if (ReadAs(reader, temp + "/vcross.png", vtkIceEnvironmentReader::VerticalCross, size,
         VTK_UNSIGNED_CHAR, "vertical cross RGBA PNG"))
   {
@@ -491,7 +495,8 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   const int panoramaWidth = 512;
   const std::vector<float> panorama = MakePanorama(panoramaWidth, panoramaWidth / 2, PanoramaScale);
   ok = WriteImage(temp + "/panorama.exr", panoramaWidth, panoramaWidth / 2, 3,
-         OIIO::TypeDesc::FLOAT, panorama.data()) && ok;
+         OIIO::TypeDesc::FLOAT, panorama.data()) &&
+    ok;
   if (ReadAs(reader, temp + "/panorama.exr", vtkIceEnvironmentReader::Equirectangular,
         panoramaWidth / 4, VTK_FLOAT, "EXR panorama"))
   {
@@ -500,8 +505,8 @@ int TestIceEnvironmentReader(int argc, char* argv[])
            "EXR panorama: |read - 3 x pattern| mean " + std::to_string(e.Mean) + ", max " +
              std::to_string(e.Max) + " (values up to 3)") &&
       ok;
-    ok = Report(e.Largest > 2.5, "EXR panorama: HDR kept as float, largest value " +
-                                   std::to_string(e.Largest)) &&
+    ok = Report(e.Largest > 2.5,
+           "EXR panorama: HDR kept as float, largest value " + std::to_string(e.Largest)) &&
       ok;
   }
   else
@@ -510,7 +515,8 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   }
   reader->SetFaceSize(40);
   ok = ReadAs(reader, temp + "/panorama.exr", vtkIceEnvironmentReader::Equirectangular, 40,
-         VTK_FLOAT, "EXR panorama with FaceSize 40") && ok;
+         VTK_FLOAT, "EXR panorama with FaceSize 40") &&
+    ok;
   reader->SetFaceSize(0);
 
   // A grey 8-bit panorama (the red channel of the pattern) comes back as RGB.
@@ -520,7 +526,8 @@ int TestIceEnvironmentReader(int argc, char* argv[])
     grey[p] = static_cast<unsigned char>(std::lround(255.0 * panorama[3 * p] / PanoramaScale));
   }
   ok = WriteImage(temp + "/grey.png", panoramaWidth, panoramaWidth / 2, 1, OIIO::TypeDesc::UINT8,
-         grey.data()) && ok;
+         grey.data()) &&
+    ok;
   if (ReadAs(reader, temp + "/grey.png", vtkIceEnvironmentReader::Equirectangular,
         panoramaWidth / 4, VTK_UNSIGNED_CHAR, "grey PNG panorama"))
   {
@@ -602,8 +609,9 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   // Float faces are uploaded as colours too: the skybox of an EXR panorama of the pattern (scale
   // 1) matches vtkIceCubeMapSource's within the panorama's resampling error.
   const std::vector<float> unitPanorama = MakePanorama(1024, 512, 1.0);
-  ok = WriteImage(temp + "/unit-panorama.exr", 1024, 512, 3, OIIO::TypeDesc::FLOAT,
-         unitPanorama.data()) && ok;
+  ok = WriteImage(
+         temp + "/unit-panorama.exr", 1024, 512, 3, OIIO::TypeDesc::FLOAT, unitPanorama.data()) &&
+    ok;
   vtkNew<vtkIceEnvironmentReader> floatReader;
   floatReader->SetFileName((temp + "/unit-panorama.exr").c_str());
   floatReader->SetFaceSize(renderSize);
@@ -618,10 +626,10 @@ int TestIceEnvironmentReader(int argc, char* argv[])
       &floatRender.Background.RGB[3 * p], &reference.Background.RGB[3 * p]));
   }
   const IceTest::Stats floatStats = IceTest::Summarize(differences);
-  ok = Report(floatStats.Mean <= 1.0 && floatStats.Max <= 4.0,
-         "skybox of float panorama faces vs vtkIceCubeMapSource's: mean " +
-           std::to_string(floatStats.Mean) + "/255, max " + std::to_string(floatStats.Max) +
-           "/255") &&
+  ok =
+    Report(floatStats.Mean <= 1.0 && floatStats.Max <= 4.0,
+      "skybox of float panorama faces vs vtkIceCubeMapSource's: mean " +
+        std::to_string(floatStats.Mean) + "/255, max " + std::to_string(floatStats.Max) + "/255") &&
     ok;
 
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -81,8 +81,8 @@ int TestIceFigure4(int argc, char* argv[])
     }
   }
   const double mean = inside ? sum / inside : 0.0;
-  std::cout << "two-sided vs one-sided inside the teapot (" << inside << " pixels): mean "
-            << mean << "/255; pixels differing by more than 2/255 outside it: " << outsideDifferent << "\n";
+  std::cout << "two-sided vs one-sided inside the teapot (" << inside << " pixels): mean " << mean
+            << "/255; pixels differing by more than 2/255 outside it: " << outsideDifferent << "\n";
   const bool differ = inside > 10000 && mean >= 6.0 && outsideDifferent == 0;
   const bool image = IceTest::CheckImage(argc, argv, window);
   return differ && image ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -73,13 +73,17 @@ bool Thirds()
   bool ok = Expect(bands[0].Count >= 20 && bands[1].Count >= 50 && bands[2].Count >= 80,
     "sparkles in the near (>= 20), middle (>= 50) and far (>= 80) thirds");
   ok = Expect(off[0].Count == 0 && off[1].Count == 0 && off[2].Count == 0,
-         "no sparkles anywhere with Glistening off") && ok;
+         "no sparkles anywhere with Glistening off") &&
+    ok;
   ok = Expect(bands[2].MedianContrast >= 0.6 * bands[0].MedianContrast,
-         "distant sparkles are crisp: median contrast at least 60 % of the near ones'") && ok;
+         "distant sparkles are crisp: median contrast at least 60 % of the near ones'") &&
+    ok;
   ok = Expect(bands[2].MeanArea <= 1.5,
-         "distant sparkles are single pixels (mean spot area <= 1.5 px)") && ok;
+         "distant sparkles are single pixels (mean spot area <= 1.5 px)") &&
+    ok;
   ok = Expect(bands[0].MeanArea >= 2.0 * bands[2].MeanArea,
-         "near sparkles are crack facets, not pixel noise (mean area >= twice the far one)") && ok;
+         "near sparkles are crack facets, not pixel noise (mean area >= twice the far one)") &&
+    ok;
   return ok;
 }
 
@@ -152,7 +156,8 @@ bool Intensification()
       // VTK's headlight (light complexity 1) shines along the view: the same light as the sun
       // placed along the view (complexity 2).
       ok = Expect(std::abs(doubled.Light - alongTheView) <= 0.01 * alongTheView,
-             "the headlight glints like a sun along the view (within 1 %)") && ok;
+             "the headlight glints like a sun along the view (within 1 %)") &&
+        ok;
     }
     else if (c.Aligned)
     {
@@ -161,12 +166,14 @@ bool Intensification()
     if (c.Aligned)
     {
       ok = Expect(single.Sparkles > 0 && ratio >= 1.4 && doubled.Sparkles > single.Sparkles,
-             std::string(c.Name) + ": intensified (glint light x >= 1.4, more sparkles)") && ok;
+             std::string(c.Name) + ": intensified (glint light x >= 1.4, more sparkles)") &&
+        ok;
     }
     else
     {
       ok = Expect(single.Sparkles > 0 && doubled.Light == single.Light,
-             std::string(c.Name) + ": glints present, not intensified (same light)") && ok;
+             std::string(c.Name) + ": glints present, not intensified (same light)") &&
+        ok;
     }
   }
   return ok;
@@ -220,10 +227,11 @@ bool Lights()
   Keep(plane.Window, "lights-positional");
   const std::vector<Band> spotBands = IceGlistening::Sparkles(spotImage, 0, top, 1);
   const std::vector<Band> beyond = IceGlistening::Sparkles(spotImage, coneEdge, top, 1);
-  std::cout << "a positional spot light: " << spotBands[0].Count << " sparkles, "
-            << beyond[0].Count << " beyond its cone (rows " << coneEdge << " to " << top << ")\n";
+  std::cout << "a positional spot light: " << spotBands[0].Count << " sparkles, " << beyond[0].Count
+            << " beyond its cone (rows " << coneEdge << " to " << top << ")\n";
   ok = Expect(spotBands[0].Count > 20 && beyond[0].Count == 0,
-         "a positional spot light gives sparkles inside its cone only") && ok;
+         "a positional spot light gives sparkles inside its cone only") &&
+    ok;
 
   plane.Actor->GetProperty()->LightingOff();
   const int unlit = count();
@@ -234,8 +242,8 @@ bool Lights()
 }
 
 // Mean luminance and mean chroma (largest minus smallest channel) over the pixels of `mask`.
-void Tone(const IceTest::Image& image, const std::vector<bool>& mask, double& luminance,
-  double& chroma)
+void Tone(
+  const IceTest::Image& image, const std::vector<bool>& mask, double& luminance, double& chroma)
 {
   luminance = chroma = 0.0;
   size_t n = 0;
@@ -322,10 +330,12 @@ bool SnowAndIce()
   const double contrast[3] = { lit[0] - shadow[0], lit[1] - shadow[1], lit[2] - shadow[2] };
   ok = Expect(contrast[2] > 2.0 * std::abs(contrast[0]) && contrast[2] > 60.0,
          "snow is diffuse: its lit side is brighter than its shadow side by > 60/255, more than "
-         "twice as much as for ice") && ok;
+         "twice as much as for ice") &&
+    ok;
   ok = Expect(chroma[1] < chroma[0] && chroma[1] > chroma[2] && contrast[1] > contrast[0] &&
-      contrast[1] < contrast[2],
-         "SnowAmount 0.5 lies between ice and snow (chroma, lit against shadow side)") && ok;
+           contrast[1] < contrast[2],
+         "SnowAmount 0.5 lies between ice and snow (chroma, lit against shadow side)") &&
+    ok;
   return ok;
 }
 

@@ -10,8 +10,7 @@
 
 int TestIceInvisible(int, char*[])
 {
-  vtkSmartPointer<vtkTexture> environment =
-    IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
+  vtkSmartPointer<vtkTexture> environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
   const IceTest::Invisibility result = IceTest::MeasureInvisibility(environment);
   return IceTest::ReportInvisibility("sky", result) ? EXIT_SUCCESS : EXIT_FAILURE;
 }

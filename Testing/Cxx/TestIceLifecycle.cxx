@@ -292,8 +292,7 @@ bool Layers()
   const int height = 160;
   const std::vector<bool> mask = IceMask(width, height);
   // Layer 0: a scene (green plane, background); layer 1: the ice alone, with its pass.
-  auto build = [&](bool scene, bool ice)
-  {
+  auto build = [&](bool scene, bool ice) {
     auto window = vtkSmartPointer<vtkRenderWindow>::New();
     window->SetOffScreenRendering(1);
     window->SetSize(width, height);
@@ -337,8 +336,7 @@ bool Layers()
   const IceTest::Image iceOnly = build(false, true);
   // Silhouette pixels are partly covered (multisampling): their colour mixes the ice with what
   // lies below, which is what layers must do. Compare the pixels clear of the silhouette.
-  auto nearSilhouette = [&](int x, int y)
-  {
+  auto nearSilhouette = [&](int x, int y) {
     for (int dy = -1; dy <= 1; ++dy)
     {
       for (int dx = -1; dx <= 1; ++dx)
@@ -467,8 +465,7 @@ bool Visibility()
 
 bool SharedMapper()
 {
-  auto render = [](bool shared)
-  {
+  auto render = [](bool shared) {
     IceScene scene;
     vtkNew<vtkIceMapper> otherMapper;
     otherMapper->SetInputConnection(scene.Teapot->GetOutputPort());
@@ -497,8 +494,7 @@ bool Translucency(bool depthPeeling)
 {
   const int width = 200;
   const int height = 160;
-  auto render = [&](int quads)
-  {
+  auto render = [&](int quads) {
     vtkNew<vtkRenderer> renderer;
     renderer->SetBackground(0.1, 0.1, 0.2);
     renderer->SetUseDepthPeeling(depthPeeling);
@@ -555,8 +551,7 @@ bool Translucency(bool depthPeeling)
   auto probeWindow = MakeWindow(probe, width, height);
   // The error at the pixel showing world point (x, 0, z) on a quad: the ice-only (or
   // background) pixel there with the listed quads composited over it, far to near.
-  auto error = [&](double x, double z, std::initializer_list<int> quads)
-  {
+  auto error = [&](double x, double z, std::initializer_list<int> quads) {
     probe->SetWorldPoint(x, 0.0, z, 1.0);
     probe->WorldToDisplay();
     double display[3];

@@ -49,7 +49,8 @@ bool CheckPlacement(const Placement& placement, Mode mode)
   pattern->ConfigureTexture(environment);
 
   vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(placement.SourceCenter[0], placement.SourceCenter[1], placement.SourceCenter[2]);
+  sphere->SetCenter(
+    placement.SourceCenter[0], placement.SourceCenter[1], placement.SourceCenter[2]);
   sphere->SetRadius(placement.SourceRadius);
   sphere->SetThetaResolution(256);
   sphere->SetPhiResolution(256);
@@ -90,8 +91,9 @@ bool CheckPlacement(const Placement& placement, Mode mode)
   window->Render();
 
   const vtkIceOpticsReference::Material material;
-  const IceTest::Stats stats = IceTest::CompareSphereWithReference(renderer,
-    IceTest::Capture(window), center, radius, material, IceTest::PatternEnvironment(pattern), mode == Mode::TwoSided);
+  const IceTest::Stats stats =
+    IceTest::CompareSphereWithReference(renderer, IceTest::Capture(window), center, radius,
+      material, IceTest::PatternEnvironment(pattern), mode == Mode::TwoSided);
   const char* modeName = mode == Mode::OneSided ? "one-sided"
     : mode == Mode::TwoSided                    ? "two-sided"
                                                 : "pass, two-sided off";

@@ -45,8 +45,8 @@ bool CheckCase(const char* name, vtkTexture* environment, const char* expected)
     recorder->Warnings[0].find(expected) != std::string::npos;
   std::cout << name << ": " << recorder->Warnings.size() << " warning(s)"
             << (recorder->Warnings.empty() ? std::string() : ": " + recorder->Warnings[0])
-            << "; centre pixel " << int(middle[0]) << "," << int(middle[1]) << ","
-            << int(middle[2]) << "\n";
+            << "; centre pixel " << int(middle[0]) << "," << int(middle[1]) << "," << int(middle[2])
+            << "\n";
   return drawn && warnedOnce;
 }
 }

@@ -136,7 +136,9 @@ std::string Describe(const std::map<int, vtkIdType>& cells)
   std::string text;
   for (const auto& entry : cells)
   {
-    text += (entry.first == 1 ? "cone " : entry.first == 2 ? "ice " : "other ") +
+    text += (entry.first == 1      ? "cone "
+                : entry.first == 2 ? "ice "
+                                   : "other ") +
       std::to_string(entry.second) + " cells; ";
   }
   return text.empty() ? "nothing" : text;
@@ -159,21 +161,23 @@ int TestIcePassPicking(int, char*[])
     same += expected[i] == picked[i] ? 1 : 0;
   }
   bool ok = cone > 3 && ice > 3 && same == expected.size();
-  std::cout << (ok ? "ok   " : "FAIL ") << "vtkPropPicker on " << expected.size()
-            << " pixels (" << cone << " on the cone, " << ice << " on the ice without the pass): "
-            << same << " picks the same with vtkIcePass\n";
+  std::cout << (ok ? "ok   " : "FAIL ") << "vtkPropPicker on " << expected.size() << " pixels ("
+            << cone << " on the cone, " << ice << " on the ice without the pass): " << same
+            << " picks the same with vtkIcePass\n";
 
   const std::map<int, vtkIdType> expectedCells = plain.SelectAll();
   const std::map<int, vtkIdType> cells = withPass.SelectAll();
   const bool selected = expectedCells.size() == 2 && cells == expectedCells;
-  std::cout << (selected ? "ok   " : "FAIL ") << "vtkHardwareSelector over the viewport: without the pass "
-            << Describe(expectedCells) << "with it " << Describe(cells) << "\n";
+  std::cout << (selected ? "ok   " : "FAIL ")
+            << "vtkHardwareSelector over the viewport: without the pass " << Describe(expectedCells)
+            << "with it " << Describe(cells) << "\n";
   const std::vector<int> expectedAreas = plain.AreaPicks();
   const std::vector<int> areas = withPass.AreaPicks();
   const bool areaOk = expectedAreas == std::vector<int>{ 1, 2 } && areas == expectedAreas;
-  std::cout << (areaOk ? "ok   " : "FAIL ") << "vtkRenderedAreaPicker, left and right halves: "
-            << areas[0] << ", " << areas[1] << " with vtkIcePass (1 cone, 2 ice; without it "
-            << expectedAreas[0] << ", " << expectedAreas[1] << ")\n";
+  std::cout << (areaOk ? "ok   " : "FAIL ")
+            << "vtkRenderedAreaPicker, left and right halves: " << areas[0] << ", " << areas[1]
+            << " with vtkIcePass (1 cone, 2 ice; without it " << expectedAreas[0] << ", "
+            << expectedAreas[1] << ")\n";
   ok = areaOk && ok;
   // Last: a pick list stays on the renderer after the pick (VTK 9.1).
   const std::vector<int> expectedCone = plain.PickGrid(true);

@@ -149,9 +149,16 @@ bool IceUnderEachOption()
   bool ok = true;
   const std::function<void(vtkRenderer*)> options[] = {
     [](vtkRenderer* r) { r->SetUseHiddenLineRemoval(true); },
-    [](vtkRenderer* r) { r->SetUseSSAO(true); r->SetSSAORadius(0.5); r->SetSSAOKernelSize(32); },
+    [](vtkRenderer* r) {
+      r->SetUseSSAO(true);
+      r->SetSSAORadius(0.5);
+      r->SetSSAOKernelSize(32);
+    },
     [](vtkRenderer* r) { r->SetUseFXAA(true); },
-    [](vtkRenderer* r) { r->SetUseDepthPeeling(true); r->SetMaximumNumberOfPeels(1); },
+    [](vtkRenderer* r) {
+      r->SetUseDepthPeeling(true);
+      r->SetMaximumNumberOfPeels(1);
+    },
   };
   const char* names[] = { "hidden line removal", "SSAO", "FXAA", "depth peeling" };
   for (int i = 0; i < 4; ++i)
@@ -172,8 +179,8 @@ bool IceUnderEachOption()
     scene.Renderer->AddActor(ice);
     const size_t changed = Differing(without, scene.Render());
     ok = changed > 1000 && ok;
-    std::cout << (changed > 1000 ? "ok   " : "FAIL ") << "ice with " << names[i] << ": "
-              << changed << " pixels drawn\n";
+    std::cout << (changed > 1000 ? "ok   " : "FAIL ") << "ice with " << names[i] << ": " << changed
+              << " pixels drawn\n";
   }
   return ok;
 }
@@ -182,19 +189,23 @@ int TestIcePassRendererOptions(int, char*[])
 {
   bool ok = CheckOption("UseHiddenLineRemoval",
     [](vtkRenderer* renderer, bool on) { renderer->SetUseHiddenLineRemoval(on); });
-  ok = CheckOption("UseSSAO", [](vtkRenderer* renderer, bool on) {
-    renderer->SetUseSSAO(on);
-    renderer->SetSSAORadius(0.5);
-    renderer->SetSSAOBias(0.01);
-    renderer->SetSSAOKernelSize(32);
-  }) && ok;
-  ok = CheckOption("UseFXAA", [](vtkRenderer* renderer, bool on) { renderer->SetUseFXAA(on); }) && ok;
+  ok = CheckOption("UseSSAO",
+         [](vtkRenderer* renderer, bool on) {
+           renderer->SetUseSSAO(on);
+           renderer->SetSSAORadius(0.5);
+           renderer->SetSSAOBias(0.01);
+           renderer->SetSSAOKernelSize(32);
+         }) &&
+    ok;
+  ok =
+    CheckOption("UseFXAA", [](vtkRenderer* renderer, bool on) { renderer->SetUseFXAA(on); }) && ok;
   ok = CheckOption("depth peeling with MaximumNumberOfPeels 1 and OcclusionRatio 0.3",
          [](vtkRenderer* renderer, bool on) {
            renderer->SetUseDepthPeeling(true);
            renderer->SetMaximumNumberOfPeels(on ? 1 : 4);
            renderer->SetOcclusionRatio(on ? 0.3 : 0.0);
-         }) && ok;
+         }) &&
+    ok;
   ok = IceUnderEachOption() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -36,8 +36,8 @@
 
 namespace
 {
-vtkSmartPointer<vtkActor> Surface(vtkAlgorithm* source, double x, double z, const double rgb[3],
-  double opacity)
+vtkSmartPointer<vtkActor> Surface(
+  vtkAlgorithm* source, double x, double z, const double rgb[3], double opacity)
 {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
@@ -64,8 +64,10 @@ vtkSmartPointer<vtkVolume> Volume()
     {
       for (int i = 0; i < 16; ++i)
       {
-        const double r = std::sqrt((i - 7.5) * (i - 7.5) + (j - 7.5) * (j - 7.5) + (k - 7.5) * (k - 7.5));
-        density->SetValue(i + 16 * (j + 16 * k), static_cast<unsigned char>(r < 7.5 ? 255 - 30 * r : 0));
+        const double r =
+          std::sqrt((i - 7.5) * (i - 7.5) + (j - 7.5) * (j - 7.5) + (k - 7.5) * (k - 7.5));
+        density->SetValue(
+          i + 16 * (j + 16 * k), static_cast<unsigned char>(r < 7.5 ? 255 - 30 * r : 0));
       }
     }
   }
@@ -163,9 +165,12 @@ int TestIcePassScenes(int, char*[])
         r.push_back(layer);
       } },
     { "translucency, order-independent",
-      [](vtkRenderWindow*, std::vector<vtkSmartPointer<vtkRenderer>>& r) { Translucent(r, false); } },
+      [](vtkRenderWindow*, std::vector<vtkSmartPointer<vtkRenderer>>& r) {
+        Translucent(r, false);
+      } },
     { "translucency, depth peeling",
-      [](vtkRenderWindow*, std::vector<vtkSmartPointer<vtkRenderer>>& r) { Translucent(r, true); } },
+      [](
+        vtkRenderWindow*, std::vector<vtkSmartPointer<vtkRenderer>>& r) { Translucent(r, true); } },
     { "2D overlay over a surface",
       [](vtkRenderWindow*, std::vector<vtkSmartPointer<vtkRenderer>>& r) {
         Translucent(r, false);

@@ -95,17 +95,20 @@ int TestIcePassStereo(int, char*[])
     "red-blue stereo differs from mono on " + std::to_string(Differing(plain, mono)) + " pixels");
   ok = Check(Differing(withPass, plain) == 0,
          "with vtkIcePass: " + std::to_string(Differing(withPass, plain)) +
-           " pixels differ from stereo without the pass") && ok;
+           " pixels differ from stereo without the pass") &&
+    ok;
   const IceTest::Image switchedOn = Render(true, { false, true }, false);
   const IceTest::Image switchedOff = Render(true, { false, true, false }, false);
   ok = Check(Differing(switchedOn, plain) == 0 && Differing(switchedOff, mono) == 0,
          "stereo switched on after the first render, and off again: " +
            std::to_string(Differing(switchedOn, plain)) + " and " +
-           std::to_string(Differing(switchedOff, mono)) + " pixels differ without the pass") && ok;
+           std::to_string(Differing(switchedOff, mono)) + " pixels differ without the pass") &&
+    ok;
   const IceTest::Image iceMono = Render(true, { false }, true);
   const IceTest::Image iceStereo = Render(true, { true }, true);
   ok = Check(Differing(iceStereo, iceMono) > 500,
          "ice in red-blue stereo differs from mono on " +
-           std::to_string(Differing(iceStereo, iceMono)) + " pixels") && ok;
+           std::to_string(Differing(iceStereo, iceMono)) + " pixels") &&
+    ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,5 +1,6 @@
 // Several ice objects with their own parameters:
-// - Two ice blocks side by side in one renderer, A left, B right. A has cracks and air, B has none: drawn in red (DebugCracksClipped), no crack pixel of A lies
+// - Two ice blocks side by side in one renderer, A left, B right. A has cracks and air, B has none:
+// drawn in red (DebugCracksClipped), no crack pixel of A lies
 //   outside A's silhouette (with one depth interval for all the ice, A's cracks showed on B), and
 //   with its highlights and air every pixel outside A's silhouette equals the frame where A has
 //   neither.
@@ -117,8 +118,8 @@ bool OneRenderer()
   }
   std::cout << "the two blocks overlap on " << overlap << " pixels\n";
   bool ok = Expect(inside > 1000 && outside == 0,
-         "A's cracks in red: " + std::to_string(inside) + " pixels inside A's silhouette, " +
-           std::to_string(outside) + " outside (" + std::to_string(onB) + " on B)");
+    "A's cracks in red: " + std::to_string(inside) + " pixels inside A's silhouette, " +
+      std::to_string(outside) + " outside (" + std::to_string(onB) + " on B)");
 
   scene.Mappers[0]->SetDebugView(vtkIceMapper::DebugOff);
   scene.Mappers[0]->SetNumberOfAirPlanes(8);
@@ -137,7 +138,8 @@ bool OneRenderer()
   }
   ok = Expect(changedInA > 1000 && changedOutside == 0,
          "A's cracks and air change " + std::to_string(changedInA) + " pixels of A and " +
-           std::to_string(changedOutside) + " elsewhere (B without either)") && ok;
+           std::to_string(changedOutside) + " elsewhere (B without either)") &&
+    ok;
   return ok;
 }
 
@@ -193,7 +195,8 @@ bool TwoRenderers()
     ok = Expect(ice > 1000 && differing == 0,
            std::string(i == 0 ? "left" : "right") + " renderer (" + std::to_string(ice) +
              " ice pixels): " + std::to_string(differing) +
-             " pixels differ from it rendered without the other") && ok;
+             " pixels differ from it rendered without the other") &&
+      ok;
   }
   return ok;
 }

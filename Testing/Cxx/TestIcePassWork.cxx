@@ -1,9 +1,9 @@
 // The ice passes skip work that does not show, without changing a pixel: the depth-interval pass
-// runs only when something reads it, the back-face pass only for two-sided ice; a moving camera modifies no mapper; the back-normal and
-// depth-interval textures are cleared only where the ice is or was, and cracks are scissored to
-// the ice, so ice moving across the screen (partly off it, and with the camera inside its
-// bounds) renders exactly what a fresh window renders, and leaves the textures as a fresh window
-// does.
+// runs only when something reads it, the back-face pass only for two-sided ice; a moving camera
+// modifies no mapper; the back-normal and depth-interval textures are cleared only where the ice is
+// or was, and cracks are scissored to the ice, so ice moving across the screen (partly off it, and
+// with the camera inside its bounds) renders exactly what a fresh window renders, and leaves the
+// textures as a fresh window does.
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
 #include "vtkIceBackfaceNormalPass.h"
@@ -122,8 +122,8 @@ bool DepthIntervalOnlyWhenRead()
   scene.Mapper->CracksPerturbRefractionOff();
   scene.Mapper->SetNumberOfCracks(0);
   scene.Mapper->SetNumberOfAirPlanes(0);
-  ok = Expect(passesPerFrame() == 0, "no cracks, no air, no debug view: no depth-interval pass") &&
-    ok;
+  ok =
+    Expect(passesPerFrame() == 0, "no cracks, no air, no debug view: no depth-interval pass") && ok;
   scene.Mapper->SetNumberOfAirPlanes(19);
   ok = Expect(passesPerFrame() == 2, "air: the depth-interval pass runs") && ok;
   scene.Mapper->SetNumberOfAirPlanes(0);

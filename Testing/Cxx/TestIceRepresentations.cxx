@@ -53,7 +53,8 @@ IceTest::Image Render(bool ice, Input input, const std::function<void(vtkActor*)
   vtkNew<vtkElevationFilter> scalars;
   scalars->SetInputConnection(sphere->GetOutputPort());
   vtkNew<vtkIceMapper> mapper;
-  mapper->SetInputConnection(input == Input::Plain ? sphere->GetOutputPort() : scalars->GetOutputPort());
+  mapper->SetInputConnection(
+    input == Input::Plain ? sphere->GetOutputPort() : scalars->GetOutputPort());
   if (input == Input::CellScalars)
   {
     mapper->SetScalarModeToUseCellData();
@@ -142,12 +143,16 @@ int TestIceRepresentations(int, char*[])
   }
   const size_t edgePixels = Count(edges);
   ok = Check(edgePixels > 1500 && edgePixels < silhouette / 2,
-         "edges: " + std::to_string(edgePixels) + " edge pixels over the ice") && ok;
+         "edges: " + std::to_string(edgePixels) + " edge pixels over the ice") &&
+    ok;
   const IceTest::Stats away = IceTest::Summarize(awayDifferences);
   ok = Check(away.Count > 2000 && away.Mean <= 1.0 && away.P99 <= 4.0,
-         "edges: " + std::to_string(away.Count) + " ice pixels away from the edges differ from the "
-         "ice without edges by mean " + std::to_string(away.Mean) + "/255, p99 " +
-         std::to_string(away.P99) + "/255, max " + std::to_string(away.Max) + "/255") && ok;
+         "edges: " + std::to_string(away.Count) +
+           " ice pixels away from the edges differ from the "
+           "ice without edges by mean " +
+           std::to_string(away.Mean) + "/255, p99 " + std::to_string(away.P99) + "/255, max " +
+           std::to_string(away.Max) + "/255") &&
+    ok;
 
   // Wireframe and points: drawn, the rest of the silhouette shows the background.
   const IceTest::Image wireframe = Render(true, Input::Plain,
@@ -156,12 +161,14 @@ int TestIceRepresentations(int, char*[])
     actor->GetProperty()->SetRepresentationToPoints();
     actor->GetProperty()->SetPointSize(3.0);
   });
-  for (const auto& drawn : { std::make_pair("wireframe", &wireframe), std::make_pair("points", &points) })
+  for (const auto& drawn :
+    { std::make_pair("wireframe", &wireframe), std::make_pair("points", &points) })
   {
     const size_t changed = Count(Differing(background, *drawn.second, 8));
     ok = Check(changed > 500 && changed < silhouette / 2,
-           std::string(drawn.first) + ": " + std::to_string(changed) + " pixels drawn (silhouette " +
-             std::to_string(silhouette) + ")") && ok;
+           std::string(drawn.first) + ": " + std::to_string(changed) +
+             " pixels drawn (silhouette " + std::to_string(silhouette) + ")") &&
+      ok;
   }
 
   // Scalars on the input do not change the ice.
@@ -169,8 +176,9 @@ int TestIceRepresentations(int, char*[])
   {
     const size_t changed = Count(Differing(ice, Render(true, input, nothing), 2));
     ok = Check(changed == 0,
-           std::string(input == Input::PointScalars ? "point" : "cell") + " scalars: " +
-             std::to_string(changed) + " pixels differ from the ice without them") && ok;
+           std::string(input == Input::PointScalars ? "point" : "cell") +
+             " scalars: " + std::to_string(changed) + " pixels differ from the ice without them") &&
+      ok;
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

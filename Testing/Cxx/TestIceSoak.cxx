@@ -258,8 +258,8 @@ void Soak::RemoveIce(size_t index)
 void Soak::Event(int frame)
 {
   const int cycle = frame / CycleLength;
-  auto any = [this](size_t n)
-  { return std::uniform_int_distribution<size_t>(0, n - 1)(this->Random); };
+  auto any = [this](
+               size_t n) { return std::uniform_int_distribution<size_t>(0, n - 1)(this->Random); };
   switch (frame % CycleLength)
   {
     case 0:

@@ -14,7 +14,7 @@ int main()
   // The reader's header needs no OpenImageIO headers (the library links OpenImageIO privately).
   vtkNew<vtkIceEnvironmentReader> reader;
   std::cout << mapper->GetClassName() << " eta " << mapper->GetRefractionRatio() << ", teapot "
-            << teapot->GetOutput()->GetNumberOfPolys() << " triangles, "
-            << reader->GetClassName() << " layout " << reader->GetLayoutAsString() << "\n";
+            << teapot->GetOutput()->GetNumberOfPolys() << " triangles, " << reader->GetClassName()
+            << " layout " << reader->GetLayoutAsString() << "\n";
   return teapot->GetOutput()->GetNumberOfPolys() > 0 ? 0 : 1;
 }
