@@ -463,6 +463,8 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FresnelPower: " << this->FresnelPower << "\n";
   os << indent << "BackNormalWeight: " << this->BackNormalWeight << "\n";
   os << indent << "TwoSidedRefraction: " << (this->TwoSidedRefraction ? "On" : "Off") << "\n";
+  os << indent << "TwoSidedMethod: "
+     << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
   os << indent << "IceColor: (" << this->IceColor[0] << ", " << this->IceColor[1] << ", "
      << this->IceColor[2] << ")\n";
   os << indent << "NumberOfCracks: " << this->NumberOfCracks << "\n";

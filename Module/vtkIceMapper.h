@@ -98,6 +98,28 @@ public:
   vtkBooleanMacro(TwoSidedRefraction, bool);
   ///@}
 
+  enum TwoSidedMethods
+  {
+    TwoSidedBlendedNormals = 0, // the paper's eq 1: one refraction about a blended normal
+    TwoSidedExitPoint = 1       // refraction at the front and again at the exit point
+  };
+
+  ///@{
+  /**
+   * How two-sided refraction goes through the ice. TwoSidedBlendedNormals (default): the paper's
+   * eq 1, one refraction about the front normal blended with the back normal behind the pixel
+   * (BackNormalWeight). TwoSidedExitPoint: the eye ray refracts at the front surface, travels
+   * through the ice to an exit point estimated in image space from the back faces' depth, and
+   * refracts again there, ice to air (where it cannot, it is reflected back into the ice and
+   * leaves in that direction); BackNormalWeight is not used. Closer to real double refraction
+   * (Documentation/optics.md has the measured errors) for a few more texture reads per pixel.
+   */
+  vtkSetClampMacro(TwoSidedMethod, int, TwoSidedBlendedNormals, TwoSidedExitPoint);
+  vtkGetMacro(TwoSidedMethod, int);
+  void SetTwoSidedMethodToBlendedNormals() { this->SetTwoSidedMethod(TwoSidedBlendedNormals); }
+  void SetTwoSidedMethodToExitPoint() { this->SetTwoSidedMethod(TwoSidedExitPoint); }
+  ///@}
+
   ///@{
   /**
    * Tint multiplied into the ice colour, each component clamped to [0, 1]. Default white. A
@@ -369,6 +391,7 @@ protected:
   double BackNormalWeight;
   double IceColor[3];
   bool TwoSidedRefraction = true;
+  int TwoSidedMethod = TwoSidedBlendedNormals;
   int NumberOfCracks = 2;
   int CrackSeed = 1;
   double CrackIntensity = 1.0;

@@ -4,6 +4,7 @@
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceDebugDepthFS.h"
 #include "vtkIceDepthIntervalPass.h"
+#include "vtkIceExitPointFS.h"
 #include "vtkIceFrameTextures.h"
 #include "vtkIceMapper.h"
 #include "vtkIceRendererSteps.h"
@@ -339,8 +340,16 @@ bool vtkIcePass::PostReplaceShaderValues(
   const int needs = mapper->GetFrameNeeds();
   if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackfaceNormals))
   {
-    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
-    vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
+    if (mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint)
+    {
+      vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceExitPointFS, "Dec"));
+      vtkIceShaderSections::FillHook(fs, "RefractionDirection", Get(vtkIceExitPointFS, "Impl"));
+    }
+    else
+    {
+      vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
+      vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
+    }
   }
   const int view = mapper->GetDebugView();
   if (this->DepthInterval &&

@@ -14,6 +14,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLActor.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -276,6 +277,15 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
   program->SetUniform3f("iceCameraWC", eyeWC);
   program->SetUniform3f("iceViewDirectionWC", directionWC);
   program->SetUniformi("iceParallelProjection", camera->GetParallelProjection() ? 1 : 0);
+  if (program->IsUniformUsed("iceWCDCMatrix"))
+  {
+    vtkMatrix4x4* wcvc;
+    vtkMatrix3x3* normals;
+    vtkMatrix4x4* vcdc;
+    vtkMatrix4x4* wcdc;
+    static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
+    program->SetUniformMatrix("iceWCDCMatrix", wcdc);
+  }
 
   // Not GetProjectionTransformMatrix(ren): that one is transposed and must be deleted.
   vtkMatrix4x4* projection =

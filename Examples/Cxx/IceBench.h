@@ -21,10 +21,11 @@ constexpr int Height = 768;
 
 enum class Material
 {
-  Plain,    // plain VTK: a vtkPolyDataMapper, Phong shading (the baseline)
-  OneSided, // vtkIceMapper without vtkIcePass
-  TwoSided, // vtkIceMapper with vtkIcePass; Cracks cracks
-  CracksAir // vtkIceMapper with vtkIcePass, 2 cracks and 19 air planes
+  Plain,     // plain VTK: a vtkPolyDataMapper, Phong shading (the baseline)
+  OneSided,  // vtkIceMapper without vtkIcePass
+  TwoSided,  // vtkIceMapper with vtkIcePass; Cracks cracks
+  CracksAir, // vtkIceMapper with vtkIcePass, 2 cracks and 19 air planes
+  ExitPoint  // as TwoSided, with TwoSidedExitPoint instead of the paper's blended normals
 };
 
 struct Statistics

@@ -61,6 +61,7 @@ std::vector<Group> DefineGroups()
       g.Quick = fifth && std::string(object) == "teapot";
       g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
         Ice("two-sided ice", Material::TwoSided),
+        Ice("two-sided ice, exit point", Material::ExitPoint),
         Ice("two-sided + cracks + air", Material::CracksAir) };
       groups.push_back(g);
     }

@@ -61,6 +61,8 @@ const char* MaterialName(Material m)
       return "two-sided";
     case Material::CracksAir:
       return "cracks+air";
+    case Material::ExitPoint:
+      return "exit-point";
   }
   return "";
 }

@@ -115,6 +115,10 @@ IceBench::Scene IceBench::BuildScene(
     mapper->SetBumpStrength(0.0);
     mapper->SetNumberOfAirPlanes(0);
     actor->SetMapper(mapper);
+    if (c.Ice == Material::ExitPoint)
+    {
+      mapper->SetTwoSidedMethodToExitPoint();
+    }
     if (c.Ice != Material::OneSided)
     {
       vtkNew<vtkIcePass> icePass;

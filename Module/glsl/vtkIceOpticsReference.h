@@ -53,6 +53,17 @@ struct Material
   Vec3 Tint = Vec3(1.0);
 };
 
+// Colour of an ice surface point whose refracted ray leaves in `refractedDirection`.
+template <typename Environment>
+Vec3 ShadeWithDirection(const Vec3& e, const Vec3& nFront, const Vec3& refractedDirection,
+  const Material& material, const Environment& environment)
+{
+  const Vec3 refracted = environment(refractedDirection);
+  const Vec3 reflected = environment(Reflect(e, nFront));
+  const double f = std::min(1.0, std::max(0.0, Fresnel(e, nFront, material.FresnelPower)));
+  return material.Tint * (refracted + (reflected - refracted) * f);
+}
+
 // Colour of an ice surface point. `environment(direction)` returns the environment's colour.
 // Pass nBack = nullptr for one-sided refraction.
 template <typename Environment>
@@ -60,10 +71,79 @@ Vec3 Shade(const Vec3& e, const Vec3& nFront, const Vec3* nBack, const Material&
   const Environment& environment)
 {
   const Vec3 nRefract = nBack ? BlendNormals(nFront, *nBack, material.BackNormalWeight) : nFront;
-  const Vec3 refracted = environment(Refract(e, nRefract, material.RefractionRatio));
-  const Vec3 reflected = environment(Reflect(e, nFront));
-  const double f = std::min(1.0, std::max(0.0, Fresnel(e, nFront, material.FresnelPower)));
-  return material.Tint * (refracted + (reflected - refracted) * f);
+  return ShadeWithDirection(
+    e, nFront, Refract(e, nRefract, material.RefractionRatio), material, environment);
+}
+
+// A texel of the back-face target: the nearest back face's world normal and view depth; Depth 0
+// where there is no ice.
+struct BackTexel
+{
+  Vec3 Normal = Vec3(0.0);
+  double Depth = 0.0;
+};
+
+// The camera as the exit-point search sees it.
+struct View
+{
+  Vec3 Position;  // iceCameraWC
+  Vec3 Direction; // iceViewDirectionWC, unit
+};
+
+// TwoSidedExitPoint, as iceExitPointDirection in vtkIceExitPointFS.glsl: the direction leaving
+// the ice for the eye vector e meeting its front at `position` with normal nFront. `backHere` is
+// the back texel under the fragment, `backUnder(point)` the texel under a world point.
+template <typename BackUnder>
+Vec3 ExitPointDirection(const Vec3& e, const Vec3& position, const Vec3& nFront, double eta,
+  const BackTexel& backHere, const View& view, const BackUnder& backUnder)
+{
+  const Vec3 t = Refract(e, nFront, eta);
+  if (backHere.Depth <= 0.0)
+  {
+    return t;
+  }
+  const double depthPerDistance = std::max(glm::dot(t, view.Direction), 0.05);
+  const double frontDepth = glm::dot(position - view.Position, view.Direction);
+  double s = std::max(backHere.Depth - frontDepth, 0.0) / depthPerDistance;
+  BackTexel back = backHere;
+  for (int i = 0; i < 3; ++i)
+  {
+    const Vec3 exitPoint = position + s * t;
+    const BackTexel under = backUnder(exitPoint);
+    if (under.Depth <= 0.0)
+    {
+      break;
+    }
+    back = under;
+    s = std::max(
+      s + (back.Depth - glm::dot(exitPoint - view.Position, view.Direction)) / depthPerDistance,
+      0.0);
+  }
+  return Refract(t, -glm::normalize(back.Normal), 1.0 / eta);
+}
+
+// The truth the approximations are measured against: exact double refraction of the eye ray
+// (from `origin` along the unit e) through a solid sphere. Refracted at the entry (eq 2), it
+// meets the sphere again and refracts out with 1 / eta (total internal reflection cannot happen
+// in a sphere: the exit angle equals the entry angle). False when the ray misses the sphere.
+inline bool SphereDoubleRefraction(const Vec3& origin, const Vec3& e, const Vec3& center,
+  double radius, double eta, Vec3& entryNormal, Vec3& exitDirection)
+{
+  const Vec3 oc = origin - center;
+  const double b = glm::dot(oc, e);
+  const double disc = b * b - (glm::dot(oc, oc) - radius * radius);
+  if (disc < 0.0)
+  {
+    return false;
+  }
+  const Vec3 entry = origin + (-b - std::sqrt(disc)) * e;
+  entryNormal = (entry - center) / radius;
+  const Vec3 t = Refract(e, entryNormal, eta);
+  // The second root of |entry + s t - center| = radius (the first is s = 0).
+  const double s = -2.0 * glm::dot(entry - center, t);
+  const Vec3 exitNormal = (entry + s * t - center) / radius;
+  exitDirection = Refract(t, -exitNormal, 1.0 / eta);
+  return true;
 }
 }
 

@@ -12,7 +12,9 @@ uniform vec3 iceTint;
     //ICEHOOK::SurfaceNormal
     vec3 nRefract = nFront;
     //ICEHOOK::RefractionNormal
-    vec3 refracted = texture(iceEnvironment, iceRefract(e, nRefract, iceRefractionRatio)).rgb;
+    vec3 refractedDirection = iceRefract(e, nRefract, iceRefractionRatio);
+    //ICEHOOK::RefractionDirection
+    vec3 refracted = texture(iceEnvironment, refractedDirection).rgb;
     vec3 reflected = texture(iceEnvironment, iceReflect(e, nFront)).rgb;
     gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(fresnel, 0.0, 1.0));
     //ICEHOOK::Glistening

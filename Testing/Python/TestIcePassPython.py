@@ -1,5 +1,6 @@
-"""vtkIcePass from Python: two-sided refraction changes the ice, the one-sided switch restores the
-pass-less image exactly, and a scene without ice is unchanged by the pass.
+"""vtkIcePass from Python: two-sided refraction changes the ice, both two-sided methods (the
+paper's blended normals, the exit point) are selectable and differ, the one-sided switch restores
+the pass-less image exactly, and a scene without ice is unchanged by the pass.
 
 Run with Debian's /usr/bin/python3.
 """
@@ -48,9 +49,21 @@ def main():
     renderer.SetPass(ice_pass)
     two_sided = grab(window)
     assert ice_pass.GetNumberOfIceProps() == 1
+    assert mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedBlendedNormals
+    mapper.SetTwoSidedMethodToExitPoint()
+    exit_point = grab(window)
+    assert mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedExitPoint
+    mapper.SetTwoSidedMethod(7)
+    assert mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedExitPoint, "clamped"
+    mapper.SetTwoSidedMethodToBlendedNormals()
+    assert mean_difference(grab(window), two_sided, 0, 200, 0, 150) == 0.0, \
+        "back to the blended normals, the same picture"
     mapper.TwoSidedRefractionOff()
     one_sided = grab(window)
 
+    methods = mean_difference(two_sided, exit_point, *box)
+    print("exit point vs blended normals: %.2f/255" % methods)
+    assert methods >= 1.0, "the exit point must refract otherwise"
     changed = mean_difference(without_pass, two_sided, *box)
     restored = mean_difference(without_pass, one_sided, *box)
     print("two-sided vs one-sided: %.2f/255; pass with two-sided off vs no pass: %.2f/255"
@@ -65,7 +78,7 @@ def main():
     unchanged = mean_difference(with_pass_no_ice, no_pass_no_ice, 0, 200, 0, 150)
     print("scene without ice, with vs without the pass: %.3f/255" % unchanged)
     assert unchanged == 0.0
-    print("3 passed, 0 failed")
+    print("5 passed, 0 failed")
     return 0
 
 

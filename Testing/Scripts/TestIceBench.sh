@@ -80,7 +80,7 @@ for r in data:
         problems.append("%s: bad counts" % where)
     if not 0.15 <= t["coverage"] <= 0.25:
         problems.append("%s: coverage %.3f is not about 1/5" % (where, t["coverage"]))
-    if r["material"] not in ("plain", "one-sided", "two-sided", "cracks+air"):
+    if r["material"] not in ("plain", "one-sided", "two-sided", "exit-point", "cracks+air"):
         problems.append("%s: material %r" % (where, r["material"]))
     if r["cube_map"] == "1":
         if r["update_mode"] not in ("every-frame", "on-change") or int(r["face_size"]) not in (128, 256, 512):

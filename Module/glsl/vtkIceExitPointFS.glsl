@@ -1,0 +1,50 @@
+//ICE::Dec
+// Two-sided refraction through the exit point (TwoSidedExitPoint), beyond the paper's eq 1: the
+// eye ray is refracted at the front surface (eq 2), followed through the ice to where it leaves,
+// found in image space from the back faces' view depth, and refracted again there, ice to air.
+// Mirrored on the CPU by vtkIceOpticsReference::ExitPointDirection: change both together.
+uniform sampler2D iceBackNormals; // nearest back face: RGB world normal, A view depth (0: no ice)
+uniform mat4 iceWCDCMatrix;       // world to normalised device coordinates
+
+// The back-face texel under the world point p: normal and view depth.
+vec4 iceBackUnder(vec3 p)
+{
+  vec4 ndc = iceWCDCMatrix * vec4(p, 1.0);
+  ivec2 size = textureSize(iceBackNormals, 0);
+  vec2 window = (ndc.xy / ndc.w * 0.5 + 0.5) * vec2(size);
+  return texelFetch(iceBackNormals, clamp(ivec2(floor(window)), ivec2(0), size - 1), 0);
+}
+
+// The direction leaving the ice for the eye vector e meeting its front surface at positionWC
+// with normal nFront; eta = n_air / n_ice. The distance s along the refracted ray t starts as the
+// straight-through thickness under this pixel and is corrected a few times: s grows by how far
+// the back face under the current exit estimate lies beyond it in view depth (the back face taken
+// as locally facing the camera). At the exit, t refracts about the back normal with 1 / eta;
+// where it cannot (total internal reflection) it is reflected back into the ice and leaves as is.
+vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4 backHere)
+{
+  vec3 t = iceRefract(e, nFront, eta);
+  if (backHere.a <= 0.0)
+  {
+    return t;
+  }
+  float depthPerDistance = max(dot(t, iceViewDirectionWC), 0.05);
+  float frontDepth = dot(positionWC - iceCameraWC, iceViewDirectionWC);
+  float s = max(backHere.a - frontDepth, 0.0) / depthPerDistance;
+  vec4 back = backHere;
+  for (int i = 0; i < 3; ++i)
+  {
+    vec3 exitPoint = positionWC + s * t;
+    vec4 under = iceBackUnder(exitPoint);
+    if (under.a <= 0.0)
+    {
+      break; // past the ice's outline in the image: keep the last estimate
+    }
+    back = under;
+    s = max(s + (back.a - dot(exitPoint - iceCameraWC, iceViewDirectionWC)) / depthPerDistance, 0.0);
+  }
+  return iceRefract(t, -normalize(back.rgb), 1.0 / eta);
+}
+//ICE::Impl
+    refractedDirection = iceExitPointDirection(e, icePositionWCVSOutput, nFront,
+      iceRefractionRatio, texelFetch(iceBackNormals, iceScreenTexel(), 0));
