@@ -6,12 +6,11 @@
 uniform sampler2D iceBackNormals; // nearest back face: RGB world normal, A view depth (0: no ice)
 uniform mat4 iceWCDCMatrix;       // world to normalised device coordinates
 
-// The back-face texel under the world point p: normal and view depth.
-vec4 iceBackUnder(vec3 p)
+// The back-face texel under the point whose clip coordinates are `clip`.
+vec4 iceBackUnder(vec4 clip)
 {
-  vec4 ndc = iceWCDCMatrix * vec4(p, 1.0);
   ivec2 size = textureSize(iceBackNormals, 0);
-  vec2 window = (ndc.xy / ndc.w * 0.5 + 0.5) * vec2(size);
+  vec2 window = (clip.xy / clip.w * 0.5 + 0.5) * vec2(size);
   return texelFetch(iceBackNormals, clamp(ivec2(floor(window)), ivec2(0), size - 1), 0);
 }
 
@@ -32,10 +31,13 @@ vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4
   float frontDepth = dot(positionWC - iceCameraWC, iceViewDirectionWC);
   float s = max(backHere.a - frontDepth, 0.0) / depthPerDistance;
   vec4 back = backHere;
+  // Clip coordinates are linear along the ray: two products instead of one per step.
+  vec4 clipStart = iceWCDCMatrix * vec4(positionWC, 1.0);
+  vec4 clipStep = iceWCDCMatrix * vec4(t, 0.0);
   for (int i = 0; i < 3; ++i)
   {
     vec3 exitPoint = positionWC + s * t;
-    vec4 under = iceBackUnder(exitPoint);
+    vec4 under = iceBackUnder(clipStart + s * clipStep);
     if (under.a <= 0.0)
     {
       break; // past the ice's outline in the image: keep the last estimate
