@@ -1,12 +1,18 @@
-// ice-render: renders a model as ice in front of an environment, to a PNG or in a window.
+// ice-render: renders a model as ice in front of an environment: to an image, a turntable of
+// images (and a video), or in an interactive window.
 #include "IceHeadless.h"
-#include "IceModelFile.h"
+#include "IceLook.h"
 #include "IceOutputFile.h"
+#include "IceRenderOptions.h"
 #include "IceScene.h"
+#include "IceTurntable.h"
+#include "IceViewer.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkIceCubeMapPass.h"
 #include "vtkIceMapper.h"
-#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkIcePass.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
@@ -15,143 +21,36 @@
 #include "vtkTexture.h"
 #include "vtkWindowToImageFilter.h"
 
-#include <cstdio>
 #include <iostream>
 #include <string>
 
-namespace
-{
-const char* const Usage =
-  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|PATH] [--size WxH]\n"
-  "                  [--out FILE] [--one-sided] [--static] [--interactive]\n"
-  "                  [--backend auto|x|egl|osmesa]\n"
-  "Renders a model as ice (default: the teapot in a small landscape) to ice.png.\n"
-  "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
-  "  --env    sky, test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
-  "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too)\n"
-  "  --size   image size, default 1024x768\n"
-  "  --out    output image, .png or .jpg (default ice.png); replaced only once the new image\n"
-  "           is complete: a failed or interrupted run leaves the old file as it was\n"
-  "  --one-sided  refract at the front face only (the default blends in the back face)\n"
-  "  --static     no landscape and no dynamic cube map: the ice sees the environment map only\n"
-  "  --interactive  open a window with a trackball camera instead of writing a file\n"
-  "  --backend  x (X display), egl or osmesa (no X needed); default $VTKICE_BACKEND or auto:\n"
-  "             x when DISPLAY works, else egl, else osmesa\n";
-
-struct Options
-{
-  std::string Model = "teapot";
-  std::string Environment = "sky";
-  std::string Output = "ice.png";
-  std::string Backend; // empty: $VTKICE_BACKEND, else auto
-  int Width = 1024;
-  int Height = 768;
-  bool Interactive = false;
-  bool OneSided = false;
-  bool Static = false;
-};
-
-int Fail(const std::string& message, int code)
-{
-  // Arguments and file names are echoed: terminal escapes in them are not passed on.
-  std::cerr << "ice-render: " << IceModelFile::Printable(message, 2000) << "\n";
-  return code;
-}
-
-bool ParseSize(const std::string& text, int& width, int& height)
-{
-  char x = 0;
-  char extra = 0;
-  return std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) == 3 && x == 'x' &&
-    width >= 16 && height >= 16 && width <= 8192 && height <= 8192;
-}
-
-// Returns -1 when the arguments are fine, otherwise the exit code.
-int Parse(int argc, char* argv[], Options& options)
-{
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc)
-      {
-        return false;
-      }
-      out = argv[++i];
-      return true;
-    };
-    std::string text;
-    if (arg == "--help" || arg == "-h")
-    {
-      std::cout << Usage;
-      return 0;
-    }
-    else if (arg == "--interactive")
-    {
-      options.Interactive = true;
-    }
-    else if (arg == "--one-sided")
-    {
-      options.OneSided = true;
-    }
-    else if (arg == "--static")
-    {
-      options.Static = true;
-    }
-    else if (arg == "--model" || arg == "--env" || arg == "--out" || arg == "--size" ||
-      arg == "--backend")
-    {
-      if (!value(text))
-      {
-        return Fail("option " + arg + " needs a value (see --help)", 2);
-      }
-      if (arg == "--model")
-      {
-        options.Model = text;
-      }
-      else if (arg == "--env")
-      {
-        options.Environment = text;
-      }
-      else if (arg == "--out")
-      {
-        if (IceOutputFile::ImageFormat(text).empty())
-        {
-          return Fail("bad --out '" + text + "' (the name must end in .png, .jpg or .jpeg)", 2);
-        }
-        options.Output = text;
-      }
-      else if (arg == "--backend")
-      {
-        IceHeadless::Backend backend;
-        if (!IceHeadless::ParseBackend(text, backend))
-        {
-          return Fail("bad --backend '" + text + "' (expected auto, x, egl or osmesa)", 2);
-        }
-        options.Backend = text;
-      }
-      else if (!ParseSize(text, options.Width, options.Height))
-      {
-        return Fail("bad --size '" + text + "' (expected WxH, each 16..8192)", 2);
-      }
-    }
-    else
-    {
-      return Fail("unknown argument '" + arg + "' (see --help)", 2);
-    }
-  }
-  return -1;
-}
-}
+using IceRenderOptions::Fail;
 
 int main(int argc, char* argv[])
 {
   IceOutputFile::RemoveTemporaryOnSignals();
-  Options options;
-  const int parsed = Parse(argc, argv, options);
+  IceRenderOptions::Options options;
+  const int parsed = IceRenderOptions::Parse(argc, argv, options);
   if (parsed >= 0)
   {
     return parsed;
+  }
+
+  if (options.PrintPreset)
+  {
+    // The library's defaults with the preset and the options applied (checked already).
+    vtkNew<vtkIceMapper> mapper;
+    vtkNew<vtkIcePass> pass;
+    vtkNew<vtkIceCubeMapPass> cubeMaps;
+    vtkNew<vtkCamera> camera;
+    if (!options.Static)
+    {
+      pass->SetCubeMapPass(cubeMaps);
+    }
+    const IceLook::Target target{ mapper, pass, cubeMaps, camera };
+    IceLook::ApplyAll(target, options.Look);
+    std::cout << IceLook::WritePreset(target, options.CameraGiven);
+    return std::cout.flush() ? 0 : Fail("cannot write to standard output", 1);
   }
 
   std::string error;
@@ -165,9 +64,11 @@ int main(int argc, char* argv[])
   {
     return Fail(error, 1);
   }
-  // Checked now, before minutes of rendering; nothing is written until the image is complete.
+  // Checked now, before minutes of rendering; nothing is written until an image is complete.
+  const std::string firstOutput =
+    options.Turntable > 0 ? IceTurntable::FrameName(options.Output, 1) : options.Output;
   const std::string outputProblem =
-    options.Interactive ? std::string() : IceOutputFile::CheckWritable(options.Output);
+    options.Interactive ? std::string() : IceOutputFile::CheckWritable(firstOutput);
   if (!outputProblem.empty())
   {
     return Fail(outputProblem, 1);
@@ -191,7 +92,18 @@ int main(int argc, char* argv[])
   sceneOptions.Landscape = !options.Static;
   sceneOptions.DynamicEnvironment = !options.Static;
   vtkActor* ice = IceScene::Populate(renderer, model, environment, sceneOptions);
-  vtkIceMapper::SafeDownCast(ice->GetMapper())->SetTwoSidedRefraction(!options.OneSided);
+  vtkIcePass* pass = vtkIcePass::SafeDownCast(renderer->GetPass());
+  vtkNew<vtkIceCubeMapPass> spareCubeMaps; // for a static scene that asks for the cube map
+  vtkIceCubeMapPass* cubeMaps = pass->GetCubeMapPass() ? pass->GetCubeMapPass() : spareCubeMaps;
+  const IceLook::Target target{ vtkIceMapper::SafeDownCast(ice->GetMapper()), pass, cubeMaps,
+    renderer->GetActiveCamera() };
+  if (options.Fit)
+  {
+    renderer->ResetCamera(ice->GetBounds());
+  }
+  IceLook::ApplyAll(target, options.Look);
+  renderer->ResetCameraClippingRange();
+
   vtkNew<vtkRenderWindow> window;
   window->SetSize(options.Width, options.Height);
   window->AddRenderer(renderer);
@@ -200,8 +112,9 @@ int main(int argc, char* argv[])
   if (options.Interactive)
   {
     vtkNew<vtkRenderWindowInteractor> interactor;
-    vtkNew<vtkInteractorStyleTrackballCamera> style;
-    interactor->SetInteractorStyle(style);
+    vtkNew<IceViewer> viewer;
+    viewer->Setup(target, renderer);
+    interactor->SetInteractorStyle(viewer);
     interactor->SetRenderWindow(window);
     window->Render();
     interactor->Start();
@@ -209,6 +122,25 @@ int main(int argc, char* argv[])
   }
 
   window->SetOffScreenRendering(1);
+  if (options.Turntable > 0)
+  {
+    bool video = false;
+    const std::string problem = IceTurntable::Render(
+      window, renderer, options.Turntable, options.Output, options.TurntableRate, video);
+    if (!problem.empty())
+    {
+      return Fail(problem, 1);
+    }
+    std::cout << "ice-render: wrote " << options.Turntable << " frames "
+              << IceTurntable::FrameName(options.Output, 1) << " .. "
+              << IceTurntable::FrameName(options.Output, options.Turntable)
+              << (video ? " and " + IceTurntable::VideoName(options.Output)
+                        : std::string(" (no video: ffmpeg is not installed)"))
+              << " (" << options.Width << "x" << options.Height << ", model " << options.Model
+              << ", back end " << backend << ")\n";
+    return std::cout.flush() ? 0 : Fail("cannot write to standard output", 1);
+  }
+
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);

@@ -1,0 +1,491 @@
+#include "IceLook.h"
+
+#include "vtkCamera.h"
+#include "vtkIceCubeMapPass.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+#include "vtkNew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+namespace IceLook
+{
+namespace
+{
+using Getter = std::function<double(const Target&)>;
+using Setter = std::function<void(const Target&, double)>;
+using Bound = std::function<double(vtkIceMapper*, vtkIceCubeMapPass*)>;
+
+struct Entry
+{
+  Setting Info;
+  std::vector<std::string> Names; // Choice: the accepted names, in enum order
+  Bound Low;                      // Number, Integer: the library's range
+  Bound High;
+  Getter Get; // Number, Integer, Switch (0/1), Choice (index)
+  Setter Set;
+  std::function<void(const Target&, double*)> GetVector; // Vector
+  std::function<void(const Target&, const double*)> SetVector;
+};
+
+std::string Format(double value)
+{
+  std::ostringstream out;
+  out.precision(10);
+  out << value;
+  return out.str();
+}
+
+bool ParseNumber(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end && *end == '\0' && std::isfinite(value);
+}
+
+// The table. Mapper and cube-map parameters read their ranges from the library itself.
+std::vector<Entry> MakeEntries()
+{
+  std::vector<Entry> e;
+  auto number = [&e](const char* name, const char* help, Bound low, Bound high, Getter get,
+                  Setter set, Kind kind = Kind::Number) {
+    Entry entry;
+    entry.Info = { name, kind, help, false };
+    entry.Low = low;
+    entry.High = high;
+    entry.Get = get;
+    entry.Set = set;
+    e.push_back(entry);
+  };
+  auto toggle = [&e](const char* name, const char* help, Getter get, Setter set) {
+    Entry entry;
+    entry.Info = { name, Kind::Switch, help, false };
+    entry.Get = get;
+    entry.Set = set;
+    e.push_back(entry);
+  };
+  auto choice = [&e](const char* name, const char* help, std::vector<std::string> names, Getter get,
+                  Setter set) {
+    Entry entry;
+    entry.Info = { name, Kind::Choice, help, false };
+    entry.Names = std::move(names);
+    entry.Get = get;
+    entry.Set = set;
+    e.push_back(entry);
+  };
+#define ICE_MAPPER_NUMBER(name, help, Property)                                                    \
+  number(                                                                                          \
+    name, help, [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->Get##Property##MinValue(); },  \
+    [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->Get##Property##MaxValue(); },              \
+    [](const Target& t) { return static_cast<double>(t.Mapper->Get##Property()); },                \
+    [](const Target& t, double v) { t.Mapper->Set##Property(v); })
+#define ICE_MAPPER_INTEGER(name, help, Property)                                                   \
+  number(                                                                                          \
+    name, help,                                                                                    \
+    [](vtkIceMapper* m, vtkIceCubeMapPass*) {                                                      \
+      return static_cast<double>(m->Get##Property##MinValue());                                    \
+    },                                                                                             \
+    [](vtkIceMapper* m, vtkIceCubeMapPass*) {                                                      \
+      return static_cast<double>(m->Get##Property##MaxValue());                                    \
+    },                                                                                             \
+    [](const Target& t) { return static_cast<double>(t.Mapper->Get##Property()); },                \
+    [](const Target& t, double v) { t.Mapper->Set##Property(static_cast<int>(v)); },               \
+    Kind::Integer)
+#define ICE_MAPPER_SWITCH(name, help, Property)                                                    \
+  toggle(                                                                                          \
+    name, help, [](const Target& t) { return t.Mapper->Get##Property() ? 1.0 : 0.0; },             \
+    [](const Target& t, double v) { t.Mapper->Set##Property(v != 0.0); })
+#define ICE_MAPPER_CHOICE(name, help, Property, ...)                                               \
+  choice(                                                                                          \
+    name, help, { __VA_ARGS__ },                                                                   \
+    [](const Target& t) { return static_cast<double>(t.Mapper->Get##Property()); },                \
+    [](const Target& t, double v) { t.Mapper->Set##Property(static_cast<int>(v)); })
+  const Bound anyLow = [](vtkIceMapper*, vtkIceCubeMapPass*) { return -2147483648.0; };
+  const Bound anyHigh = [](vtkIceMapper*, vtkIceCubeMapPass*) { return 2147483647.0; };
+
+  ICE_MAPPER_NUMBER("eta", "ratio of refraction indices, air / ice (eq 2)", RefractionRatio);
+  ICE_MAPPER_NUMBER("fresnel-power", "exponent P of the Fresnel term (eq 4)", FresnelPower);
+  {
+    Entry color;
+    color.Info = { "color", Kind::Vector, "ice colour, red,green,blue each in [0, 1]", false };
+    color.GetVector = [](const Target& t, double* v) { t.Mapper->GetIceColor(v); };
+    color.SetVector = [](const Target& t, const double* v) { t.Mapper->SetIceColor(v); };
+    e.push_back(color);
+  }
+  ICE_MAPPER_SWITCH(
+    "two-sided", "refract through the back faces too (with the pass)", TwoSidedRefraction);
+  ICE_MAPPER_CHOICE("two-sided-method", "how two-sided refraction goes through the ice",
+    TwoSidedMethod, "blended-normals", "exit-point");
+  ICE_MAPPER_NUMBER(
+    "back-normal-weight", "weight of the back normal (eq 1, blended-normals)", BackNormalWeight);
+  ICE_MAPPER_INTEGER("cracks", "number of crack surfaces inside the ice", NumberOfCracks);
+  number(
+    "crack-seed", "placement of the cracks", anyLow, anyHigh,
+    [](const Target& t) { return static_cast<double>(t.Mapper->GetCrackSeed()); },
+    [](const Target& t, double v) { t.Mapper->SetCrackSeed(static_cast<int>(v)); }, Kind::Integer);
+  ICE_MAPPER_NUMBER("crack-intensity", "brightness of the cracks' highlights", CrackIntensity);
+  ICE_MAPPER_CHOICE("crack-clipping", "how cracks are kept inside the ice", CrackClipping,
+    "depth-interval", "geometry");
+  ICE_MAPPER_SWITCH(
+    "cracks-in-refraction", "cracks bend the refraction like back faces", CracksPerturbRefraction);
+  ICE_MAPPER_INTEGER("air", "number of air-bubble planes", NumberOfAirPlanes);
+  number(
+    "air-seed", "placement and images of the air", anyLow, anyHigh,
+    [](const Target& t) { return static_cast<double>(t.Mapper->GetAirSeed()); },
+    [](const Target& t, double v) { t.Mapper->SetAirSeed(static_cast<int>(v)); }, Kind::Integer);
+  ICE_MAPPER_NUMBER("milkiness", "0 clear bubbles, 1 white and cloudy", Milkiness);
+  ICE_MAPPER_NUMBER("bumps", "strength of the surface bumps (0: smooth)", BumpStrength);
+  ICE_MAPPER_NUMBER("bump-scale", "size of the bumps, a fraction of the model", BumpScale);
+  ICE_MAPPER_SWITCH("glistening", "direct light, rim light and crack glints", Glistening);
+  ICE_MAPPER_NUMBER("snow", "snow cover where the surface faces up (with glistening)", SnowAmount);
+  ICE_MAPPER_NUMBER("glistening-scale", "size of the glints", GlisteningScale);
+  ICE_MAPPER_NUMBER("glistening-intensity", "brightness of the glints", GlisteningIntensity);
+  ICE_MAPPER_NUMBER(
+    "glistening-alignment", "how sharply glints follow the light", GlisteningAlignmentGain);
+  ICE_MAPPER_CHOICE("debug-view", "the paper's Figure 5 views", DebugView, "off", "front-depth",
+    "back-depth", "cracks-unclipped", "cracks-clipped", "air");
+
+  toggle(
+    "cube-map", "reflect and refract a cube map of the scene around the ice (dynamic)",
+    [](const Target& t) { return t.Pass && t.Pass->GetCubeMapPass() ? 1.0 : 0.0; },
+    [](const Target& t, double v) {
+      if (t.Pass)
+      {
+        t.Pass->SetCubeMapPass(v != 0.0 ? t.CubeMaps : nullptr);
+      }
+    });
+  choice(
+    "cube-map-update", "when the dynamic cube map is rendered",
+    { "every-frame", "on-change", "manual" },
+    [](const Target& t) { return static_cast<double>(t.CubeMaps->GetUpdateMode()); },
+    [](const Target& t, double v) { t.CubeMaps->SetUpdateMode(static_cast<int>(v)); });
+  number(
+    "cube-map-size", "size of a cube-map face in pixels",
+    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
+      return static_cast<double>(c->GetFaceSizeMinValue());
+    },
+    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
+      return static_cast<double>(c->GetFaceSizeMaxValue());
+    },
+    [](const Target& t) { return static_cast<double>(t.CubeMaps->GetFaceSize()); },
+    [](const Target& t, double v) { t.CubeMaps->SetFaceSize(static_cast<int>(v)); }, Kind::Integer);
+  number(
+    "cube-map-faces", "cube-map faces rendered per frame",
+    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
+      return static_cast<double>(c->GetFacesPerFrameMinValue());
+    },
+    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
+      return static_cast<double>(c->GetFacesPerFrameMaxValue());
+    },
+    [](const Target& t) { return static_cast<double>(t.CubeMaps->GetFacesPerFrame()); },
+    [](const Target& t, double v) { t.CubeMaps->SetFacesPerFrame(static_cast<int>(v)); },
+    Kind::Integer);
+  toggle(
+    "cube-map-culling", "leave props outside a face out of its render",
+    [](const Target& t) { return t.CubeMaps->GetFrustumCulling() ? 1.0 : 0.0; },
+    [](const Target& t, double v) { t.CubeMaps->SetFrustumCulling(v != 0.0); });
+#undef ICE_MAPPER_NUMBER
+#undef ICE_MAPPER_INTEGER
+#undef ICE_MAPPER_SWITCH
+#undef ICE_MAPPER_CHOICE
+
+  auto vector = [&e](const char* name, const char* help, void (vtkCamera::*get)(double[3]),
+                  void (vtkCamera::*set)(const double[3])) {
+    Entry entry;
+    entry.Info = { name, Kind::Vector, help, true };
+    entry.GetVector = [get](const Target& t, double* v) { (t.Camera->*get)(v); };
+    entry.SetVector = [set](const Target& t, const double* v) { (t.Camera->*set)(v); };
+    e.push_back(entry);
+  };
+  vector("camera-position", "where the camera is, x,y,z", &vtkCamera::GetPosition,
+    &vtkCamera::SetPosition);
+  vector("focal-point", "what the camera looks at, x,y,z", &vtkCamera::GetFocalPoint,
+    &vtkCamera::SetFocalPoint);
+  vector(
+    "view-up", "the camera's up direction, x,y,z", &vtkCamera::GetViewUp, &vtkCamera::SetViewUp);
+  {
+    Entry angle;
+    angle.Info = { "view-angle", Kind::Number, "the camera's vertical view angle in degrees",
+      true };
+    angle.Low = [](vtkIceMapper*, vtkIceCubeMapPass*) { return 1.0; };
+    angle.High = [](vtkIceMapper*, vtkIceCubeMapPass*) { return 179.0; };
+    angle.Get = [](const Target& t) { return t.Camera->GetViewAngle(); };
+    angle.Set = [](const Target& t, double v) { t.Camera->SetViewAngle(v); };
+    e.push_back(angle);
+  }
+  return e;
+}
+
+const std::vector<Entry>& Entries()
+{
+  static const std::vector<Entry> entries = MakeEntries();
+  return entries;
+}
+
+const Entry* FindEntry(const std::string& name)
+{
+  for (const Entry& entry : Entries())
+  {
+    if (name == entry.Info.Name)
+    {
+      return &entry;
+    }
+  }
+  return nullptr;
+}
+
+// A mapper and a cube-map pass with the library's defaults, for ranges and checks.
+struct Scratch
+{
+  vtkNew<vtkIceMapper> Mapper;
+  vtkNew<vtkIcePass> Pass;
+  vtkNew<vtkIceCubeMapPass> CubeMaps;
+  vtkNew<vtkCamera> Camera;
+  Target Get() const { return { this->Mapper, this->Pass, this->CubeMaps, this->Camera }; }
+};
+
+Scratch& Defaults()
+{
+  static Scratch scratch;
+  return scratch;
+}
+
+std::string Trim(const std::string& text)
+{
+  const auto begin = text.find_first_not_of(" \t\r");
+  const auto end = text.find_last_not_of(" \t\r");
+  return begin == std::string::npos ? std::string() : text.substr(begin, end - begin + 1);
+}
+}
+
+//------------------------------------------------------------------------------
+const std::vector<Setting>& Settings()
+{
+  static const std::vector<Setting> settings = [] {
+    std::vector<Setting> list;
+    for (const Entry& entry : Entries())
+    {
+      list.push_back(entry.Info);
+    }
+    return list;
+  }();
+  return settings;
+}
+
+//------------------------------------------------------------------------------
+const Setting* Find(const std::string& name)
+{
+  const Entry* entry = FindEntry(name);
+  return entry ? &entry->Info : nullptr;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> Choices(const std::string& name)
+{
+  const Entry* entry = FindEntry(name);
+  return entry ? entry->Names : std::vector<std::string>();
+}
+
+//------------------------------------------------------------------------------
+std::string Range(const std::string& name)
+{
+  const Entry* entry = FindEntry(name);
+  if (!entry || !entry->Low)
+  {
+    return std::string();
+  }
+  Scratch& d = Defaults();
+  return "[" + Format(entry->Low(d.Mapper, d.CubeMaps)) + ", " +
+    Format(entry->High(d.Mapper, d.CubeMaps)) + "]";
+}
+
+//------------------------------------------------------------------------------
+std::string Apply(const Target& target, const std::string& name, const std::string& value)
+{
+  const Entry* entry = FindEntry(name);
+  if (!entry)
+  {
+    return "unknown setting '" + name + "'";
+  }
+  const std::string bad = "bad " + name + " '" + value + "'";
+  switch (entry->Info.Type)
+  {
+    case Kind::Number:
+    case Kind::Integer:
+    {
+      double v;
+      Scratch& d = Defaults();
+      const double low = entry->Low(d.Mapper, d.CubeMaps);
+      const double high = entry->High(d.Mapper, d.CubeMaps);
+      const bool integer = entry->Info.Type == Kind::Integer;
+      if (!ParseNumber(value, v) || (integer && v != std::floor(v)) || v < low || v > high)
+      {
+        return bad + " (" + (integer ? "a whole number" : "a number") + " in " + Range(name) + ")";
+      }
+      entry->Set(target, v);
+      return std::string();
+    }
+    case Kind::Switch:
+      if (value != "on" && value != "off")
+      {
+        return bad + " (on or off)";
+      }
+      entry->Set(target, value == "on" ? 1.0 : 0.0);
+      return std::string();
+    case Kind::Choice:
+      for (size_t i = 0; i < entry->Names.size(); ++i)
+      {
+        if (value == entry->Names[i])
+        {
+          entry->Set(target, static_cast<double>(i));
+          return std::string();
+        }
+      }
+      {
+        std::string names;
+        for (const std::string& n : entry->Names)
+        {
+          names += (names.empty() ? "" : ", ") + n;
+        }
+        return bad + " (one of " + names + ")";
+      }
+    case Kind::Vector:
+    {
+      double v[3];
+      std::string rest = value;
+      for (int i = 0; i < 3; ++i)
+      {
+        const auto comma = rest.find(',');
+        const std::string part = i < 2 ? rest.substr(0, comma) : rest;
+        if ((i < 2 && comma == std::string::npos) || !ParseNumber(part, v[i]))
+        {
+          return bad + " (three numbers x,y,z)";
+        }
+        rest = i < 2 ? rest.substr(comma + 1) : rest;
+      }
+      if (name == "color" &&
+        (std::min({ v[0], v[1], v[2] }) < 0.0 || std::max({ v[0], v[1], v[2] }) > 1.0))
+      {
+        return bad + " (red,green,blue each in [0, 1])";
+      }
+      if (name == "view-up" && v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0)
+      {
+        return bad + " (a direction: not 0,0,0)";
+      }
+      entry->SetVector(target, v);
+      return std::string();
+    }
+  }
+  return bad;
+}
+
+//------------------------------------------------------------------------------
+std::string Value(const Target& target, const std::string& name)
+{
+  const Entry* entry = FindEntry(name);
+  if (!entry)
+  {
+    return std::string();
+  }
+  switch (entry->Info.Type)
+  {
+    case Kind::Switch:
+      return entry->Get(target) != 0.0 ? "on" : "off";
+    case Kind::Choice:
+    {
+      const size_t index = static_cast<size_t>(entry->Get(target));
+      return index < entry->Names.size() ? entry->Names[index] : std::string();
+    }
+    case Kind::Vector:
+    {
+      double v[3];
+      entry->GetVector(target, v);
+      return Format(v[0]) + "," + Format(v[1]) + "," + Format(v[2]);
+    }
+    default:
+      return Format(entry->Get(target));
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string ReadPreset(const std::string& path, Assignments& assignments)
+{
+  std::ifstream file(path);
+  if (!file)
+  {
+    return "cannot read preset '" + path + "'";
+  }
+  std::string line;
+  for (int number = 1; std::getline(file, line); ++number)
+  {
+    line = Trim(line.substr(0, line.find('#')));
+    if (line.empty())
+    {
+      continue;
+    }
+    const auto equals = line.find('=');
+    const std::string where = path + ":" + std::to_string(number) + ": ";
+    if (equals == std::string::npos)
+    {
+      return where + "expected NAME = VALUE";
+    }
+    const std::string name = Trim(line.substr(0, equals));
+    const std::string value = Trim(line.substr(equals + 1));
+    if (!Find(name))
+    {
+      return where + "unknown setting '" + name + "'";
+    }
+    const std::string problem = Check({ { name, value } });
+    if (!problem.empty())
+    {
+      return where + problem;
+    }
+    assignments.emplace_back(name, value);
+  }
+  return file.bad() ? "cannot read preset '" + path + "'" : std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string WritePreset(const Target& target, const std::vector<std::string>& cameraGiven)
+{
+  std::string text = "# VTK Ice look (ice-render --print-preset); use with --preset FILE\n";
+  for (const Entry& entry : Entries())
+  {
+    const std::string name = entry.Info.Name;
+    if (entry.Info.Camera &&
+      std::find(cameraGiven.begin(), cameraGiven.end(), name) == cameraGiven.end())
+    {
+      continue;
+    }
+    text += name + " = " + Value(target, name) + "\n";
+  }
+  return text;
+}
+
+//------------------------------------------------------------------------------
+std::string ApplyAll(const Target& target, const Assignments& assignments)
+{
+  for (const auto& assignment : assignments)
+  {
+    const std::string problem = Apply(target, assignment.first, assignment.second);
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string Check(const Assignments& assignments)
+{
+  Scratch scratch;
+  return ApplyAll(scratch.Get(), assignments);
+}
+}

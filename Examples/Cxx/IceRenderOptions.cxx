@@ -1,0 +1,304 @@
+#include "IceRenderOptions.h"
+
+#include "IceHeadless.h"
+#include "IceModelFile.h"
+#include "IceOutputFile.h"
+
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace IceRenderOptions
+{
+namespace
+{
+const char* const Usage =
+  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|PATH] [--size WxH]\n"
+  "                  [--out FILE] [--static] [--interactive] [--turntable N [--rate FPS]]\n"
+  "                  [--preset NAME|FILE] [--print-preset] [look and camera options]\n"
+  "                  [--backend auto|x|egl|osmesa]\n"
+  "Renders a model as ice (default: the teapot in a small landscape) to ice.png.\n"
+  "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
+  "  --env    sky, test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
+  "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too)\n"
+  "  --size   image size, default 1024x768\n"
+  "  --out    output image, .png or .jpg (default ice.png); replaced only once the new image\n"
+  "           is complete: a failed or interrupted run leaves the old file as it was\n"
+  "  --static     no landscape and no dynamic cube map: the ice sees the environment map only\n"
+  "  --interactive  a window: trackball camera, keys for the effects (h shows them)\n"
+  "  --turntable N  N images around the model, OUT-0001.png ... (and OUT.mp4 with ffmpeg)\n"
+  "  --rate FPS     frames per second of the turntable's video (default 24)\n"
+  "  --preset     a look: a shipped one (clear, glacier, frosted, snow) or a file of\n"
+  "               NAME = VALUE lines; options on the command line override it\n"
+  "  --print-preset  print the effective look as a preset and exit\n"
+  "  --fit        frame the ice: the camera keeps its direction and moves to show it whole\n"
+  "  --backend  x (X display), egl or osmesa (no X needed); default $VTKICE_BACKEND or auto:\n"
+  "             x when DISPLAY works, else egl, else osmesa\n"
+  "Look and camera (switches: --NAME on, --no-NAME off; --one-sided is --no-two-sided):\n";
+
+bool ParseSize(const std::string& text, int& width, int& height)
+{
+  char x = 0;
+  char extra = 0;
+  return std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) == 3 && x == 'x' &&
+    width >= 16 && height >= 16 && width <= 8192 && height <= 8192;
+}
+
+bool ParseInteger(const std::string& text, int low, int high, int& value)
+{
+  char* end = nullptr;
+  const long parsed = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || !end || *end != '\0' || parsed < low || parsed > high)
+  {
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+void PrintUsage()
+{
+  std::cout << Usage;
+  for (const IceLook::Setting& setting : IceLook::Settings())
+  {
+    std::string syntax = std::string("--") + setting.Name;
+    switch (setting.Type)
+    {
+      case IceLook::Kind::Number:
+      case IceLook::Kind::Integer:
+        syntax += " " + IceLook::Range(setting.Name);
+        break;
+      case IceLook::Kind::Switch:
+        syntax += ", --no-" + std::string(setting.Name);
+        break;
+      case IceLook::Kind::Choice:
+      {
+        std::string names;
+        for (const std::string& n : IceLook::Choices(setting.Name))
+        {
+          names += (names.empty() ? "" : "|") + n;
+        }
+        syntax += " " + names;
+        break;
+      }
+      case IceLook::Kind::Vector:
+        syntax += " X,Y,Z";
+        break;
+    }
+    std::cout << "  " << syntax << "\n      " << setting.Help << "\n";
+  }
+}
+
+// Whether `path` is a regular file.
+bool IsFile(const std::string& path)
+{
+  struct stat info;
+  return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+}
+
+//------------------------------------------------------------------------------
+int Fail(const std::string& message, int code)
+{
+  // Arguments and file names are echoed: terminal escapes in them are not passed on.
+  std::cerr << "ice-render: " << IceModelFile::Printable(message, 2000) << "\n";
+  return code;
+}
+
+//------------------------------------------------------------------------------
+std::string FindPreset(const std::string& preset)
+{
+  if (IsFile(preset))
+  {
+    return preset;
+  }
+  if (preset.empty() || preset.find('/') != std::string::npos)
+  {
+    return std::string();
+  }
+  std::vector<std::string> folders;
+  char exe[PATH_MAX];
+  const ssize_t length = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+  if (length > 0)
+  {
+    exe[length] = '\0';
+    const std::string bin = std::string(exe).substr(0, std::string(exe).rfind('/'));
+    folders.push_back(bin + "/../share/vtkice/presets");
+  }
+  folders.push_back(VTKICE_PRESET_SOURCE_DIR);
+  for (const std::string& folder : folders)
+  {
+    const std::string path = folder + "/" + preset + ".ice";
+    if (IsFile(path))
+    {
+      return path;
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+int Parse(int argc, char* argv[], Options& options)
+{
+  IceLook::Assignments preset;
+  IceLook::Assignments given;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    std::string text;
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc)
+      {
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    // Settings of the look and the camera.
+    const std::string name = arg.compare(0, 2, "--") == 0 ? arg.substr(2) : std::string();
+    const bool negated = name.compare(0, 3, "no-") == 0;
+    const IceLook::Setting* setting = IceLook::Find(negated ? name.substr(3) : name);
+    if (arg == "--one-sided")
+    {
+      given.emplace_back("two-sided", "off");
+      continue;
+    }
+    if (setting && setting->Type == IceLook::Kind::Switch)
+    {
+      given.emplace_back(setting->Name, negated ? "off" : "on");
+      continue;
+    }
+    if (setting && !negated)
+    {
+      if (!value(text))
+      {
+        return Fail("option " + arg + " needs a value (see --help)", 2);
+      }
+      const std::string problem = IceLook::Check({ { setting->Name, text } });
+      if (!problem.empty())
+      {
+        // "bad NAME ..." as an option.
+        return Fail(problem.compare(0, 4, "bad ") == 0 ? "bad --" + problem.substr(4) : problem, 2);
+      }
+      given.emplace_back(setting->Name, text);
+      if (setting->Camera)
+      {
+        options.CameraGiven.push_back(setting->Name);
+      }
+      continue;
+    }
+    if (arg == "--help" || arg == "-h")
+    {
+      PrintUsage();
+      return 0;
+    }
+    else if (arg == "--interactive")
+    {
+      options.Interactive = true;
+    }
+    else if (arg == "--static")
+    {
+      options.Static = true;
+    }
+    else if (arg == "--fit")
+    {
+      options.Fit = true;
+    }
+    else if (arg == "--print-preset")
+    {
+      options.PrintPreset = true;
+    }
+    else if (arg == "--model" || arg == "--env" || arg == "--out" || arg == "--size" ||
+      arg == "--backend" || arg == "--preset" || arg == "--turntable" || arg == "--rate")
+    {
+      if (!value(text))
+      {
+        return Fail("option " + arg + " needs a value (see --help)", 2);
+      }
+      if (arg == "--model")
+      {
+        options.Model = text;
+      }
+      else if (arg == "--env")
+      {
+        options.Environment = text;
+      }
+      else if (arg == "--out")
+      {
+        if (IceOutputFile::ImageFormat(text).empty())
+        {
+          return Fail("bad --out '" + text + "' (the name must end in .png, .jpg or .jpeg)", 2);
+        }
+        options.Output = text;
+      }
+      else if (arg == "--backend")
+      {
+        IceHeadless::Backend backend;
+        if (!IceHeadless::ParseBackend(text, backend))
+        {
+          return Fail("bad --backend '" + text + "' (expected auto, x, egl or osmesa)", 2);
+        }
+        options.Backend = text;
+      }
+      else if (arg == "--preset")
+      {
+        const std::string path = FindPreset(text);
+        if (path.empty())
+        {
+          return Fail("no preset '" + text +
+              "' (a file, or one of the shipped clear, glacier, frosted, snow)",
+            2);
+        }
+        preset.clear();
+        const std::string problem = IceLook::ReadPreset(path, preset);
+        if (!problem.empty())
+        {
+          return Fail(problem, 2);
+        }
+        for (const auto& assignment : preset)
+        {
+          if (IceLook::Find(assignment.first)->Camera)
+          {
+            options.CameraGiven.push_back(assignment.first);
+          }
+        }
+      }
+      else if (arg == "--turntable")
+      {
+        if (!ParseInteger(text, 1, 3600, options.Turntable))
+        {
+          return Fail("bad --turntable '" + text + "' (frames, a whole number in [1, 3600])", 2);
+        }
+      }
+      else if (arg == "--rate")
+      {
+        int rate = 0;
+        if (!ParseInteger(text, 1, 240, rate))
+        {
+          return Fail(
+            "bad --rate '" + text + "' (frames per second, a whole number in [1, 240])", 2);
+        }
+        options.TurntableRate = rate;
+      }
+      else if (!ParseSize(text, options.Width, options.Height))
+      {
+        return Fail("bad --size '" + text + "' (expected WxH, each 16..8192)", 2);
+      }
+    }
+    else
+    {
+      return Fail("unknown argument '" + arg + "' (see --help)", 2);
+    }
+  }
+  if (options.Interactive && options.Turntable > 0)
+  {
+    return Fail("--interactive and --turntable exclude each other", 2);
+  }
+  options.Look = preset;
+  options.Look.insert(options.Look.end(), given.begin(), given.end());
+  return -1;
+}
+}

@@ -1,0 +1,147 @@
+#include "IceTurntable.h"
+
+#include "IceOutputFile.h"
+
+#include "vtkCamera.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace IceTurntable
+{
+namespace
+{
+std::string Stem(const std::string& output)
+{
+  const auto slash = output.rfind('/');
+  const auto dot = output.rfind('.');
+  return dot != std::string::npos && (slash == std::string::npos || dot > slash)
+    ? output.substr(0, dot)
+    : output;
+}
+
+std::string Extension(const std::string& output)
+{
+  return output.substr(Stem(output).size());
+}
+
+// Whether `program` is an executable on the PATH.
+bool OnPath(const std::string& program)
+{
+  const char* path = std::getenv("PATH");
+  std::string folders = path ? path : "";
+  size_t start = 0;
+  while (start <= folders.size())
+  {
+    const size_t end = folders.find(':', start);
+    const std::string folder = folders.substr(start, end == std::string::npos ? end : end - start);
+    if (!folder.empty() && access((folder + "/" + program).c_str(), X_OK) == 0)
+    {
+      return true;
+    }
+    if (end == std::string::npos)
+    {
+      break;
+    }
+    start = end + 1;
+  }
+  return false;
+}
+
+// Runs ffmpeg on the frames into a temporary file beside the video, renamed once complete.
+std::string EncodeVideo(const std::string& output, int frames, double rate)
+{
+  const std::string video = VideoName(output);
+  const auto slash = video.rfind('/');
+  const std::string temporary =
+    (slash == std::string::npos ? std::string() : video.substr(0, slash + 1)) + "." +
+    video.substr(slash == std::string::npos ? 0 : slash + 1) + ".part.mp4";
+  const std::string pattern = Stem(output) + "-%04d" + Extension(output);
+  const std::string rateText = std::to_string(static_cast<int>(rate));
+  const std::string count = std::to_string(frames);
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    // Even sizes for yuv420p, which every player reads.
+    execlp("ffmpeg", "ffmpeg", "-y", "-loglevel", "error", "-framerate", rateText.c_str(), "-i",
+      pattern.c_str(), "-frames:v", count.c_str(), "-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2",
+      "-pix_fmt", "yuv420p", temporary.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (child < 0 || waitpid(child, &status, 0) != child || !WIFEXITED(status) ||
+    WEXITSTATUS(status) != 0)
+  {
+    std::remove(temporary.c_str());
+    return "ffmpeg could not encode " + video;
+  }
+  if (std::rename(temporary.c_str(), video.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    return "cannot write " + video;
+  }
+  return std::string();
+}
+}
+
+//------------------------------------------------------------------------------
+std::string FrameName(const std::string& output, int index)
+{
+  char number[16];
+  std::snprintf(number, sizeof(number), "-%04d", index);
+  return Stem(output) + number + Extension(output);
+}
+
+//------------------------------------------------------------------------------
+std::string VideoName(const std::string& output)
+{
+  return Stem(output) + ".mp4";
+}
+
+//------------------------------------------------------------------------------
+std::string Render(vtkRenderWindow* window, vtkRenderer* renderer, int frames,
+  const std::string& output, double rate, bool& video)
+{
+  video = false;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  std::string problem;
+  for (int i = 1; i <= frames && problem.empty(); ++i)
+  {
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    problem = IceOutputFile::WriteImage(FrameName(output, i), grab->GetOutput());
+    if (terminal)
+    {
+      std::cerr << "\rice-render: turntable frame " << i << "/" << frames << std::flush;
+    }
+    camera->Azimuth(360.0 / frames);
+    renderer->ResetCameraClippingRange();
+  }
+  if (terminal)
+  {
+    std::cerr << "\n";
+  }
+  // A whole turn has brought the camera back where it was.
+  if (!problem.empty() || frames <= 0)
+  {
+    return problem;
+  }
+  if (OnPath("ffmpeg"))
+  {
+    problem = EncodeVideo(output, frames, rate);
+    video = problem.empty();
+  }
+  return problem;
+}
+}

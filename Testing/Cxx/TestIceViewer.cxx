@@ -1,0 +1,197 @@
+// ice-render's interactive viewer, driven by key events sent to its interactor (as typing in its
+// window does): each key changes what it says on the ice mapper, the cube-map pass or the legend,
+// and the rendered picture where it should; the legend shows the current values, the readout the
+// frame time; the save key writes a screenshot and a preset that gives the same look back; other
+// keys go to VTK's trackball style.
+#include "IceLook.h"
+#include "IceScene.h"
+#include "IceTestUtilities.h"
+#include "IceViewer.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkIceCubeMapPass.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkGenericRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
+
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+bool Expect(bool condition, const std::string& what)
+{
+  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
+  return condition;
+}
+
+size_t Differing(const IceTest::Image& a, const IceTest::Image& b)
+{
+  size_t count = 0;
+  for (int y = 0; y < a.Height; ++y)
+  {
+    for (int x = 0; x < a.Width; ++x)
+    {
+      count += IceTest::PixelDifference(a.At(x, y), b.At(x, y)) > 2 ? 1 : 0;
+    }
+  }
+  return count;
+}
+
+bool Exists(const std::string& path)
+{
+  struct stat info;
+  return stat(path.c_str(), &info) == 0 && info.st_size > 0;
+}
+}
+
+int TestIceViewer(int, char*[])
+{
+  std::string error;
+  vtkSmartPointer<vtkPolyData> model = IceScene::LoadModel("sphere", error);
+  vtkSmartPointer<vtkTexture> environment = IceScene::LoadEnvironment("sky", error);
+  vtkNew<vtkRenderer> renderer;
+  IceScene::Options options;
+  options.Landscape = false;
+  options.DynamicEnvironment = false;
+  vtkActor* ice = IceScene::Populate(renderer, model, environment, options);
+  vtkIcePass* pass = vtkIcePass::SafeDownCast(renderer->GetPass());
+  vtkNew<vtkIceCubeMapPass> cubeMaps;
+  cubeMaps->SetFaceSize(64);
+  vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(ice->GetMapper());
+  const IceLook::Target target{ mapper, pass, cubeMaps, renderer->GetActiveCamera() };
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(240, 180);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  // A generic interactor: no X event loop (the test runs through any back end).
+  vtkNew<vtkGenericRenderWindowInteractor> interactor;
+  vtkNew<IceViewer> viewer;
+  viewer->Setup(target, renderer);
+  interactor->SetInteractorStyle(viewer);
+  interactor->SetRenderWindow(window);
+  window->Render();
+
+  // A key typed in the window: the interactor's key code, then its CharEvent.
+  auto type = [&](char key) {
+    interactor->SetKeyCode(key);
+    interactor->InvokeEvent(vtkCommand::CharEvent, nullptr);
+    return IceTest::Capture(window);
+  };
+  auto legendSays = [&](const std::string& text) {
+    return viewer->GetLegend().find(text) != std::string::npos;
+  };
+
+  bool ok = true;
+  IceTest::Image before = IceTest::Capture(window);
+  ok = Expect(legendSays("1  one-/two-sided: on") && legendSays("g  glistening on/off: off"),
+         "the legend lists the keys with the current values") &&
+    ok;
+  ok = Expect(viewer->GetFrameTime().find("ms") != std::string::npos,
+         "the readout shows the frame time: '" + viewer->GetFrameTime() + "'") &&
+    ok;
+
+  struct Step
+  {
+    char Key;
+    const char* What;
+    std::function<bool()> Changed;
+    const char* Legend;
+  };
+  const Step steps[] = {
+    { '1', "one-sided", [&] { return !mapper->GetTwoSidedRefraction(); }, "one-/two-sided: off" },
+    { '1', "two-sided again", [&] { return mapper->GetTwoSidedRefraction(); },
+      "one-/two-sided: on" },
+    { '2', "exit point",
+      [&] { return mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint; },
+      "method: exit-point" },
+    { 'c', "cracks off", [&] { return mapper->GetNumberOfCracks() == 0; }, "cracks on/off: 0" },
+    { 'c', "cracks back", [&] { return mapper->GetNumberOfCracks() == 2; }, "cracks on/off: 2" },
+    { '.', "one crack more", [&] { return mapper->GetNumberOfCracks() == 3; }, "cracks on/off: 3" },
+    { 'a', "air off", [&] { return mapper->GetNumberOfAirPlanes() == 0; }, "air on/off: 0" },
+    { 'a', "air back", [&] { return mapper->GetNumberOfAirPlanes() == 19; }, "air on/off: 19" },
+    { '=', "milkier", [&] { return mapper->GetMilkiness() > 0.55; }, "milkiness down / up =: 0.6" },
+    { 'b', "bumps off", [&] { return mapper->GetBumpStrength() == 0.0; }, "bumps on/off: 0" },
+    { 'g', "glistening", [&] { return mapper->GetGlistening(); }, "glistening on/off: on" },
+    { '\'', "snow", [&] { return mapper->GetSnowAmount() > 0.05; }, "snow less / more ': 0.1" },
+    { ']', "eta up", [&] { return mapper->GetRefractionRatio() > 0.78; }, "eta down / up ]: 0.78" },
+    { 'd', "dynamic cube map", [&] { return pass->GetCubeMapPass() == cubeMaps.Get(); },
+      "cube map on/off: on" },
+    { 'v', "debug view", [&] { return mapper->GetDebugView() == vtkIceMapper::DebugFrontDepth; },
+      "debug view: front-depth" },
+    { 'h', "legend hidden", [&] { return true; }, "" },
+  };
+  for (const Step& step : steps)
+  {
+    const IceTest::Image after = type(step.Key);
+    const size_t changed = Differing(before, after);
+    ok = Expect(step.Changed() && changed > 20 && (!*step.Legend || legendSays(step.Legend)),
+           std::string("key '") + step.Key + "': " + step.What + " (" + std::to_string(changed) +
+             " pixels changed" +
+             (*step.Legend ? ", legend '" + std::string(step.Legend) + "'" : "") + ")") &&
+      ok;
+    before = after;
+  }
+
+  // Other keys are VTK's: 'r' resets the camera.
+  renderer->GetActiveCamera()->Dolly(3.0);
+  const double distance = renderer->GetActiveCamera()->GetDistance();
+  type('r');
+  ok = Expect(renderer->GetActiveCamera()->GetDistance() != distance,
+         "a key the viewer does not use ('r') goes to VTK's style (camera reset)") &&
+    ok;
+
+  // Save: a screenshot and a preset that give this look back.
+  char folder[] = "/tmp/ice-viewer-XXXXXX";
+  if (!mkdtemp(folder))
+  {
+    return EXIT_FAILURE;
+  }
+  viewer->SetOutputDirectory(folder);
+  type('s');
+  const std::string base = std::string(folder) + "/ice-view-1";
+  ok = Expect(Exists(base + ".png") && Exists(base + ".ice"),
+         "key 's' saved " + viewer->GetLastSaved()) &&
+    ok;
+  IceLook::Assignments saved;
+  const std::string problem = IceLook::ReadPreset(base + ".ice", saved);
+  vtkNew<vtkIceMapper> fresh;
+  vtkNew<vtkIcePass> freshPass;
+  vtkNew<vtkIceCubeMapPass> freshCubeMaps;
+  vtkNew<vtkCamera> freshCamera;
+  const IceLook::Target again{ fresh, freshPass, freshCubeMaps, freshCamera };
+  const std::string applied = IceLook::ApplyAll(again, saved);
+  bool same = problem.empty() && applied.empty();
+  for (const IceLook::Setting& setting : IceLook::Settings())
+  {
+    if (!setting.Camera &&
+      IceLook::Value(again, setting.Name) != IceLook::Value(target, setting.Name))
+    {
+      std::cout << "     " << setting.Name << ": " << IceLook::Value(again, setting.Name)
+                << " instead of " << IceLook::Value(target, setting.Name) << "\n";
+      same = false;
+    }
+  }
+  ok = Expect(same,
+         "the saved preset gives every setting of the viewer's look back" +
+           (problem.empty() ? applied : problem)) &&
+    ok;
+  for (const char* file : { ".png", ".ice" })
+  {
+    unlink((base + file).c_str());
+  }
+  rmdir(folder);
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
