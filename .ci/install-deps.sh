@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages VTK Ice needs to build, test and render headless
-# (Xvfb for the X tests; Mesa EGL and OSMesa for rendering without X).
+# (Xvfb for the X tests; Mesa EGL and OSMesa for rendering without X), to make and check its
+# Debian package (dpkg-dev, lintian) and the turntable's video (ffmpeg).
 # Skips apt-get entirely when every package is already installed.
 set -euo pipefail
 packages=(
   libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config
   libglm-dev libopenimageio-dev
   xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
+  dpkg-dev lintian ffmpeg
 )
 missing=()
 for p in "${packages[@]}"; do

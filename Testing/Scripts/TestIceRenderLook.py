@@ -202,8 +202,11 @@ def turntable():
     check("the turntable's frames differ", len(differing(*pictures)) > 100)
     video = os.path.join(WORK, "turn.mp4")
     if shutil.which("ffmpeg"):
-        check("with ffmpeg, the turntable's video", os.path.getsize(video) > 1000 and
-              "and " + video in result.stdout, result.stdout.strip())
+        probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-show_entries",
+                                "stream=nb_read_frames,width,height", "-of", "csv=p=0", video],
+                               capture_output=True, text=True)
+        check("with ffmpeg, the turntable's video: 3 frames of 96x72", probe.stdout.strip() ==
+              "96,72,3" and "and " + video in result.stdout, probe.stdout.strip() + probe.stderr)
     else:
         check("without ffmpeg, frames only, said so",
               not os.path.exists(video) and "no video: ffmpeg is not installed" in result.stdout)
