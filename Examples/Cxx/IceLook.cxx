@@ -165,27 +165,21 @@ std::vector<Entry> MakeEntries()
     { "every-frame", "on-change", "manual" },
     [](const Target& t) { return static_cast<double>(t.CubeMaps->GetUpdateMode()); },
     [](const Target& t, double v) { t.CubeMaps->SetUpdateMode(static_cast<int>(v)); });
-  number(
-    "cube-map-size", "size of a cube-map face in pixels",
-    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
-      return static_cast<double>(c->GetFaceSizeMinValue());
-    },
-    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
-      return static_cast<double>(c->GetFaceSizeMaxValue());
-    },
-    [](const Target& t) { return static_cast<double>(t.CubeMaps->GetFaceSize()); },
-    [](const Target& t, double v) { t.CubeMaps->SetFaceSize(static_cast<int>(v)); }, Kind::Integer);
-  number(
-    "cube-map-faces", "cube-map faces rendered per frame",
-    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
-      return static_cast<double>(c->GetFacesPerFrameMinValue());
-    },
-    [](vtkIceMapper*, vtkIceCubeMapPass* c) {
-      return static_cast<double>(c->GetFacesPerFrameMaxValue());
-    },
-    [](const Target& t) { return static_cast<double>(t.CubeMaps->GetFacesPerFrame()); },
-    [](const Target& t, double v) { t.CubeMaps->SetFacesPerFrame(static_cast<int>(v)); },
-    Kind::Integer);
+#define ICE_CUBE_MAP_INTEGER(name, help, Property)                                                 \
+  number(                                                                                          \
+    name, help,                                                                                    \
+    [](vtkIceMapper*, vtkIceCubeMapPass* c) {                                                      \
+      return static_cast<double>(c->Get##Property##MinValue());                                    \
+    },                                                                                             \
+    [](vtkIceMapper*, vtkIceCubeMapPass* c) {                                                      \
+      return static_cast<double>(c->Get##Property##MaxValue());                                    \
+    },                                                                                             \
+    [](const Target& t) { return static_cast<double>(t.CubeMaps->Get##Property()); },              \
+    [](const Target& t, double v) { t.CubeMaps->Set##Property(static_cast<int>(v)); },             \
+    Kind::Integer)
+  ICE_CUBE_MAP_INTEGER("cube-map-size", "size of a cube-map face in pixels", FaceSize);
+  ICE_CUBE_MAP_INTEGER("cube-map-faces", "cube-map faces rendered per frame", FacesPerFrame);
+#undef ICE_CUBE_MAP_INTEGER
   toggle(
     "cube-map-culling", "leave props outside a face out of its render",
     [](const Target& t) { return t.CubeMaps->GetFrustumCulling() ? 1.0 : 0.0; },

@@ -85,17 +85,14 @@ void IceViewer::Setup(const IceLook::Target& target, vtkRenderer* renderer)
     static_cast<IceViewer*>(viewer)->ShowFrameTime();
   });
   this->EndObserver = renderer->AddObserver(vtkCommand::EndEvent, ended);
-  if (target.Mapper->GetNumberOfCracks() > 0)
+  for (auto setting : { std::make_pair("cracks", &this->Cracks), std::make_pair("air", &this->Air),
+         std::make_pair("bumps", &this->Bumps) })
   {
-    this->Cracks = target.Mapper->GetNumberOfCracks();
-  }
-  if (target.Mapper->GetNumberOfAirPlanes() > 0)
-  {
-    this->Air = target.Mapper->GetNumberOfAirPlanes();
-  }
-  if (target.Mapper->GetBumpStrength() > 0.0)
-  {
-    this->Bumps = target.Mapper->GetBumpStrength();
+    const std::string value = IceLook::Value(target, setting.first);
+    if (std::stod(value) != 0.0)
+    {
+      *setting.second = value;
+    }
   }
   this->UpdateLegend();
 }
@@ -146,6 +143,21 @@ void IceViewer::Toggle(const std::string& name)
 }
 
 //------------------------------------------------------------------------------
+void IceViewer::OffOrBack(const std::string& name, std::string& remembered)
+{
+  const std::string value = IceLook::Value(this->Target, name);
+  if (std::stod(value) != 0.0)
+  {
+    remembered = value;
+    IceLook::Apply(this->Target, name, "0");
+  }
+  else
+  {
+    IceLook::Apply(this->Target, name, remembered);
+  }
+}
+
+//------------------------------------------------------------------------------
 void IceViewer::Cycle(const std::string& name)
 {
   const std::vector<std::string> names = IceLook::Choices(name);
@@ -178,7 +190,6 @@ void IceViewer::Step(const std::string& name, double delta)
 //------------------------------------------------------------------------------
 bool IceViewer::HandleKey(char key)
 {
-  vtkIceMapper* mapper = this->Target.Mapper;
   switch (key)
   {
     case '1':
@@ -188,37 +199,13 @@ bool IceViewer::HandleKey(char key)
       this->Cycle("two-sided-method");
       break;
     case 'c':
-      if (mapper->GetNumberOfCracks() > 0)
-      {
-        this->Cracks = mapper->GetNumberOfCracks();
-        mapper->SetNumberOfCracks(0);
-      }
-      else
-      {
-        mapper->SetNumberOfCracks(this->Cracks);
-      }
+      this->OffOrBack("cracks", this->Cracks);
       break;
     case 'a':
-      if (mapper->GetNumberOfAirPlanes() > 0)
-      {
-        this->Air = mapper->GetNumberOfAirPlanes();
-        mapper->SetNumberOfAirPlanes(0);
-      }
-      else
-      {
-        mapper->SetNumberOfAirPlanes(this->Air);
-      }
+      this->OffOrBack("air", this->Air);
       break;
     case 'b':
-      if (mapper->GetBumpStrength() > 0.0)
-      {
-        this->Bumps = mapper->GetBumpStrength();
-        mapper->SetBumpStrength(0.0);
-      }
-      else
-      {
-        mapper->SetBumpStrength(this->Bumps);
-      }
+      this->OffOrBack("bumps", this->Bumps);
       break;
     case 'g':
       this->Toggle("glistening");

@@ -45,6 +45,8 @@ protected:
   void Save();
   void Step(const std::string& name, double delta);
   void Toggle(const std::string& name);
+  // Turns a count or strength off, or back on to `remembered`.
+  void OffOrBack(const std::string& name, std::string& remembered);
   void Cycle(const std::string& name);
   void ShowFrameTime();
 
@@ -53,9 +55,10 @@ protected:
   vtkNew<vtkTextActor> Legend;
   vtkNew<vtkTextActor> FrameTime;
   bool LegendVisible = true;
-  int Cracks = 8; // restored when cracks are switched on again
-  int Air = 19;
-  double Bumps = 0.08;
+  // Restored when cracks, air or bumps are switched on again.
+  std::string Cracks = "8";
+  std::string Air = "19";
+  std::string Bumps = "0.08";
   int Saves = 0;
   std::string OutputDirectory = ".";
   std::string LastSaved;
