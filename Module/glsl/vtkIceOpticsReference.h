@@ -123,25 +123,39 @@ Vec3 ExitPointDirection(const Vec3& e, const Vec3& position, const Vec3& nFront,
 }
 
 // The truth the approximations are measured against: exact double refraction of the eye ray
-// (from `origin` along the unit e) through a solid sphere. Refracted at the entry (eq 2), it
-// meets the sphere again and refracts out with 1 / eta (total internal reflection cannot happen
-// in a sphere: the exit angle equals the entry angle). False when the ray misses the sphere.
-inline bool SphereDoubleRefraction(const Vec3& origin, const Vec3& e, const Vec3& center,
-  double radius, double eta, Vec3& entryNormal, Vec3& exitDirection)
+// (from `origin` along the unit e) through a solid axis-aligned ellipsoid (a sphere when the
+// radii are equal). Refracted at the entry (eq 2), the ray meets the surface again and refracts
+// out with 1 / eta. False when the ray misses, or when the exit is a total internal reflection
+// (possible in an ellipsoid, not in a sphere: the light would go on inside; no approximation
+// here follows it, so no truth is claimed there).
+inline bool EllipsoidDoubleRefraction(const Vec3& origin, const Vec3& e, const Vec3& center,
+  const Vec3& radii, double eta, Vec3& entryNormal, Vec3& exitDirection)
 {
-  const Vec3 oc = origin - center;
-  const double b = glm::dot(oc, e);
-  const double disc = b * b - (glm::dot(oc, oc) - radius * radius);
+  // In the ellipsoid's unit-sphere space the surface is |p| = 1.
+  const Vec3 o = (origin - center) / radii;
+  const Vec3 d = e / radii;
+  const double a = glm::dot(d, d);
+  const double b = glm::dot(o, d);
+  const double disc = b * b - a * (glm::dot(o, o) - 1.0);
   if (disc < 0.0)
   {
     return false;
   }
-  const Vec3 entry = origin + (-b - std::sqrt(disc)) * e;
-  entryNormal = (entry - center) / radius;
+  const Vec3 entry = origin + ((-b - std::sqrt(disc)) / a) * e;
+  // The normal is the gradient of |(p - c) / r|^2.
+  entryNormal = glm::normalize((entry - center) / (radii * radii));
   const Vec3 t = Refract(e, entryNormal, eta);
-  // The second root of |entry + s t - center| = radius (the first is s = 0).
-  const double s = -2.0 * glm::dot(entry - center, t);
-  const Vec3 exitNormal = (entry + s * t - center) / radius;
+  // The second root along t (the first, at the entry, is 0).
+  const Vec3 pt = (entry - center) / radii;
+  const Vec3 dt = t / radii;
+  const double s = -2.0 * glm::dot(pt, dt) / glm::dot(dt, dt);
+  const Vec3 exitPoint = entry + s * t;
+  const Vec3 exitNormal = glm::normalize((exitPoint - center) / (radii * radii));
+  const double cosine = glm::dot(-exitNormal, t);
+  if (1.0 - (1.0 / (eta * eta)) * (1.0 - cosine * cosine) < 0.0)
+  {
+    return false;
+  }
   exitDirection = Refract(t, -exitNormal, 1.0 / eta);
   return true;
 }
