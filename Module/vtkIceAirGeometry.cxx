@@ -13,10 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkTransform.h"
 
-#include <algorithm>
 #include <cstdint>
-#include <numeric>
-#include <vector>
 
 vtkStandardNewMacro(vtkIceAirGeometry);
 
@@ -39,7 +36,6 @@ int vtkIceAirGeometry::RequestData(
   vtkNew<vtkFloatArray> normals;
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
-  std::vector<double> distance;
   const std::uint32_t sequence = static_cast<std::uint32_t>(this->Seed) * 6151U + 7U;
   for (int i = 0; i < this->NumberOfPlanes; ++i)
   {
@@ -63,15 +59,9 @@ int vtkIceAirGeometry::RequestData(
       vtkMath::Normalize(n);
       normals->InsertNextTuple(n);
     }
-    distance.push_back(vtkMath::Distance2BetweenPoints(center, this->Eye));
   }
-  // Back to front: farthest centre first; ties keep the placement order.
-  std::vector<vtkIdType> order(distance.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-    [&distance](vtkIdType a, vtkIdType b) { return distance[a] > distance[b]; });
   vtkNew<vtkCellArray> quads;
-  for (vtkIdType i : order)
+  for (vtkIdType i = 0; i < this->NumberOfPlanes; ++i)
   {
     const vtkIdType quad[4] = { 4 * i, 4 * i + 1, 4 * i + 2, 4 * i + 3 };
     quads->InsertNextCell(4, quad);

@@ -5,16 +5,13 @@
  * Input: the ice surface. Output: NumberOfPlanes squares at random orientations in the middle of
  * the input's bounds (half-sizes 0.2 to 0.4 of its largest extent, placement picked by Seed),
  * each with the texture coordinates "vtkIceAirUV" of one tile of the 2 x 2 bubble atlas and its
- * normal. With a camera position set (SetEye, in the input's coordinates) the planes come back to
- * front, farthest first, for alpha blending; a pipeline filter, it sorts again only when the eye
- * or the planes change.
+ * normal. A pipeline filter: the planes are placed again only when the input or a parameter
+ * changes (vtkIceBackToFront orders them for the camera).
  */
 #ifndef vtkIceAirGeometry_h
 #define vtkIceAirGeometry_h
 
 #include "vtkPolyDataAlgorithm.h"
-
-#include <vector> // for members
 
 class vtkIceAirGeometry : public vtkPolyDataAlgorithm
 {
@@ -26,8 +23,6 @@ public:
   vtkGetMacro(NumberOfPlanes, int);
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
-  vtkSetVector3Macro(Eye, double);
-  vtkGetVector3Macro(Eye, double);
 
 protected:
   vtkIceAirGeometry() = default;
@@ -37,7 +32,6 @@ protected:
 
   int NumberOfPlanes = 0;
   int Seed = 1;
-  double Eye[3] = { 0.0, 0.0, 0.0 };
 
 private:
   vtkIceAirGeometry(const vtkIceAirGeometry&) = delete;

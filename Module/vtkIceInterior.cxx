@@ -3,6 +3,7 @@
 #include "vtkIceAirGeometry.h"
 #include "vtkIceAirMapper.h"
 #include "vtkIceAirTextureSource.h"
+#include "vtkIceBackToFront.h"
 #include "vtkIceCrackGeometry.h"
 #include "vtkIceCrackMapper.h"
 
@@ -89,7 +90,8 @@ vtkIceInterior::vtkIceInterior()
   this->AirActor->GetProperty()->LightingOff();
   this->AirActor->SetMapper(this->AirMapper);
   this->AirMapper->ScalarVisibilityOff();
-  this->AirMapper->SetInputConnection(this->Air->GetOutputPort());
+  this->AirOrder->SetInputConnection(this->Air->GetOutputPort());
+  this->AirMapper->SetInputConnection(this->AirOrder->GetOutputPort());
   this->AirTexture->SetInputConnection(this->AirImages->GetOutputPort());
   this->AirTexture->InterpolateOn();
   this->AirTexture->MipmapOn();
@@ -151,7 +153,7 @@ void vtkIceInterior::DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* 
   this->Air->SetInputData(iceInput);
   this->Air->SetNumberOfPlanes(number);
   this->Air->SetSeed(seed);
-  this->Air->SetEye(eye);
+  this->AirOrder->SetEye(eye);
   this->AirImages->SetSeed(seed);
   this->AirMapper->SetMilkiness(milkiness);
   this->AirMapper->SetDebugColor(debug);

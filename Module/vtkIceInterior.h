@@ -1,5 +1,6 @@
 // The inside of one ice mapper's ice: its crack sheets and air planes, the pipelines that build
-// them (vtkIceCrackGeometry, vtkIceAirGeometry) and the private mappers that draw them.
+// them (vtkIceCrackGeometry; vtkIceAirGeometry, ordered by vtkIceBackToFront) and the private
+// mappers that draw them.
 #ifndef vtkIceInterior_h
 #define vtkIceInterior_h
 
@@ -9,6 +10,7 @@ class vtkActor;
 class vtkIceAirGeometry;
 class vtkIceAirMapper;
 class vtkIceAirTextureSource;
+class vtkIceBackToFront;
 class vtkIceCrackGeometry;
 class vtkIceCrackMapper;
 class vtkPolyData;
@@ -52,6 +54,7 @@ private:
   vtkNew<vtkIceCrackMapper> CrackMapper;
   vtkNew<vtkActor> CrackActor;
   vtkNew<vtkIceAirGeometry> Air;
+  vtkNew<vtkIceBackToFront> AirOrder;
   vtkNew<vtkIceAirTextureSource> AirImages;
   vtkNew<vtkTexture> AirTexture;
   vtkNew<vtkIceAirMapper> AirMapper;

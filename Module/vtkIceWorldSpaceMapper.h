@@ -7,7 +7,7 @@
  * scale, whatever the lighting), the camera position and view direction, `iceViewDepth()` and
  * `iceScreenTexel()` for viewport-sized textures. It validates the input (polygons, finite points)
  * and computes point normals when there are none. Subclasses add their shading through
- * ReplaceIceShaderValues and SetIceShaderParameters.
+ * AddIceShaderParts and SetIceShaderParameters.
  */
 #ifndef vtkIceWorldSpaceMapper_h
 #define vtkIceWorldSpaceMapper_h
@@ -16,7 +16,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkSmartPointer.h" // for members
 
-#include <string> // for ReplaceIceShaderValues
+#include <string> // for CheckInput
 #include <vector> // for members
 
 struct vtkIceShaderParts;

@@ -122,14 +122,10 @@ Vec3 ExitPointDirection(const Vec3& e, const Vec3& position, const Vec3& nFront,
   return Refract(t, -glm::normalize(back.Normal), 1.0 / eta);
 }
 
-// The truth the approximations are measured against: exact double refraction of the eye ray
-// (from `origin` along the unit e) through a solid axis-aligned ellipsoid (a sphere when the
-// radii are equal). Refracted at the entry (eq 2), the ray meets the surface again and refracts
-// out with 1 / eta. False when the ray misses, or when the exit is a total internal reflection
-// (possible in an ellipsoid, not in a sphere: the light would go on inside; no approximation
-// here follows it, so no truth is claimed there).
-inline bool EllipsoidDoubleRefraction(const Vec3& origin, const Vec3& e, const Vec3& center,
-  const Vec3& radii, double eta, Vec3& entryNormal, Vec3& exitDirection)
+// Distances along the unit e from `origin` to where the line meets an axis-aligned ellipsoid
+// (near and far, near <= far); false when it misses.
+inline bool IntersectEllipsoid(const Vec3& origin, const Vec3& e, const Vec3& center,
+  const Vec3& radii, double& tNear, double& tFar)
 {
   // In the ellipsoid's unit-sphere space the surface is |p| = 1.
   const Vec3 o = (origin - center) / radii;
@@ -141,16 +137,39 @@ inline bool EllipsoidDoubleRefraction(const Vec3& origin, const Vec3& e, const V
   {
     return false;
   }
-  const Vec3 entry = origin + ((-b - std::sqrt(disc)) / a) * e;
-  // The normal is the gradient of |(p - c) / r|^2.
-  entryNormal = glm::normalize((entry - center) / (radii * radii));
+  tNear = (-b - std::sqrt(disc)) / a;
+  tFar = (-b + std::sqrt(disc)) / a;
+  return true;
+}
+
+// The outward unit normal of the ellipsoid at its surface point p: the gradient of
+// |(p - c) / r|^2.
+inline Vec3 EllipsoidNormal(const Vec3& p, const Vec3& center, const Vec3& radii)
+{
+  return glm::normalize((p - center) / (radii * radii));
+}
+
+// The truth the approximations are measured against: exact double refraction of the eye ray
+// (from `origin` along the unit e) through a solid axis-aligned ellipsoid (a sphere when the
+// radii are equal). Refracted at the entry (eq 2), the ray meets the surface again and refracts
+// out with 1 / eta. False when the ray misses, or when the exit is a total internal reflection
+// (possible in an ellipsoid, not in a sphere: the light would go on inside; no approximation
+// here follows it, so no truth is claimed there).
+inline bool EllipsoidDoubleRefraction(const Vec3& origin, const Vec3& e, const Vec3& center,
+  const Vec3& radii, double eta, Vec3& entryNormal, Vec3& exitDirection)
+{
+  double tNear;
+  double tFar;
+  if (!IntersectEllipsoid(origin, e, center, radii, tNear, tFar))
+  {
+    return false;
+  }
+  const Vec3 entry = origin + tNear * e;
+  entryNormal = EllipsoidNormal(entry, center, radii);
   const Vec3 t = Refract(e, entryNormal, eta);
-  // The second root along t (the first, at the entry, is 0).
-  const Vec3 pt = (entry - center) / radii;
-  const Vec3 dt = t / radii;
-  const double s = -2.0 * glm::dot(pt, dt) / glm::dot(dt, dt);
-  const Vec3 exitPoint = entry + s * t;
-  const Vec3 exitNormal = glm::normalize((exitPoint - center) / (radii * radii));
+  // From inside, the far root along t is the exit (the near one, about 0, the entry).
+  IntersectEllipsoid(entry, t, center, radii, tNear, tFar);
+  const Vec3 exitNormal = EllipsoidNormal(entry + tFar * t, center, radii);
   const double cosine = glm::dot(-exitNormal, t);
   if (1.0 - (1.0 / (eta * eta)) * (1.0 - cosine * cosine) < 0.0)
   {

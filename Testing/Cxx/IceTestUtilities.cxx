@@ -77,6 +77,16 @@ int PixelDifference(const unsigned char* a, const unsigned char* b)
   return worst;
 }
 
+size_t CountDiffering(const Image& a, const Image& b, int threshold)
+{
+  size_t count = 0;
+  for (size_t p = 0; 3 * p < a.RGB.size() && 3 * p < b.RGB.size(); ++p)
+  {
+    count += PixelDifference(&a.RGB[3 * p], &b.RGB[3 * p]) > threshold ? 1 : 0;
+  }
+  return count;
+}
+
 Stats Summarize(std::vector<double> values)
 {
   Stats stats;

@@ -37,6 +37,9 @@ Image Capture(vtkRenderWindow* window);
 // Largest channel difference of two pixels, in 0..255.
 int PixelDifference(const unsigned char* a, const unsigned char* b);
 
+// Pixels of two images of the same size whose PixelDifference exceeds `threshold`.
+size_t CountDiffering(const Image& a, const Image& b, int threshold);
+
 struct Stats
 {
   double Mean = 0.0;

@@ -110,7 +110,7 @@ struct Scene
     }
     const dvec3 back = origin + tFar * e;
     const vtkIceOpticsReference::View view = this->View();
-    texel.Normal = glm::normalize((back - this->CenterVector()) / (this->Radii * this->Radii));
+    texel.Normal = vtkIceOpticsReference::EllipsoidNormal(back, this->CenterVector(), this->Radii);
     texel.Depth = glm::dot(back - view.Position, view.Direction);
     return texel;
   }
@@ -138,18 +138,9 @@ struct Scene
     IceTest::PixelRay(this->Renderer, x, y, o, d);
     origin = dvec3(o[0], o[1], o[2]);
     e = glm::normalize(dvec3(d[0], d[1], d[2]));
-    const dvec3 p = (origin - this->CenterVector()) / this->Radii;
-    const dvec3 q = e / this->Radii;
-    const double a = glm::dot(q, q);
-    const double b = glm::dot(p, q);
-    const double disc = b * b - a * (glm::dot(p, p) - 1.0);
-    if (disc < 0.0)
-    {
-      return false;
-    }
-    tNear = (-b - std::sqrt(disc)) / a;
-    tFar = (-b + std::sqrt(disc)) / a;
-    return tNear > 0.0;
+    return vtkIceOpticsReference::IntersectEllipsoid(
+             origin, e, this->CenterVector(), this->Radii, tNear, tFar) &&
+      tNear > 0.0;
   }
 
   // Pixels whose ray and those of every pixel within `margin` hit the ellipsoid.
@@ -242,7 +233,7 @@ Expected Evaluate(Scene& scene)
         ? 255.0 *
           vtkIceOpticsReference::ShadeWithDirection(e, nFront, exitDirection, material, environment)
         : dvec3(nan);
-      nFront = glm::normalize((front - center) / (scene.Radii * scene.Radii));
+      nFront = vtkIceOpticsReference::EllipsoidNormal(front, center, scene.Radii);
       const dvec3 approximated =
         vtkIceOpticsReference::ExitPointDirection(e, front, nFront, material.RefractionRatio,
           scene.BackAt(x, y), view, [&scene](const dvec3& p) { return scene.BackUnder(p); });
@@ -346,14 +337,7 @@ bool WithEverything()
   const IceTest::Image blended = scene.Render();
   scene.Mapper->SetTwoSidedMethodToExitPoint();
   const IceTest::Image exitPoint = scene.Render();
-  size_t differing = 0;
-  for (int y = 0; y < blended.Height; ++y)
-  {
-    for (int x = 0; x < blended.Width; ++x)
-    {
-      differing += IceTest::PixelDifference(blended.At(x, y), exitPoint.At(x, y)) > 2 ? 1 : 0;
-    }
-  }
+  const size_t differing = IceTest::CountDiffering(blended, exitPoint, 2);
   bool ok = Expect(IceTest::TakeGLErrors(scene.Window).empty(),
     "exit point with cracks in the refraction, air, bumps, glistening and a dynamic cube map: "
     "no OpenGL error");

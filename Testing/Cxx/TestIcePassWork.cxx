@@ -149,14 +149,7 @@ bool BackfaceNormalsOnlyWhenNeeded()
   scene.Mapper->TwoSidedRefractionOff();
   ok = Expect(passesPerFrame() == 0, "one-sided ice: no back-face pass") && ok;
   const IceTest::Image oneSided = IceTest::Capture(scene.Window);
-  size_t differing = 0;
-  for (int y = 0; y < twoSided.Height; ++y)
-  {
-    for (int x = 0; x < twoSided.Width; ++x)
-    {
-      differing += IceTest::PixelDifference(twoSided.At(x, y), oneSided.At(x, y)) > 2 ? 1 : 0;
-    }
-  }
+  const size_t differing = IceTest::CountDiffering(twoSided, oneSided, 2);
   ok = Expect(differing > 100,
          "and the ice refracts otherwise without the back faces (" + std::to_string(differing) +
            " pixels differ by more than 2/255)") &&

@@ -36,19 +36,6 @@ bool Expect(bool condition, const std::string& what)
   return condition;
 }
 
-size_t Differing(const IceTest::Image& a, const IceTest::Image& b)
-{
-  size_t count = 0;
-  for (int y = 0; y < a.Height; ++y)
-  {
-    for (int x = 0; x < a.Width; ++x)
-    {
-      count += IceTest::PixelDifference(a.At(x, y), b.At(x, y)) > 2 ? 1 : 0;
-    }
-  }
-  return count;
-}
-
 bool Exists(const std::string& path)
 {
   struct stat info;
@@ -136,7 +123,7 @@ int TestIceViewer(int, char*[])
   for (const Step& step : steps)
   {
     const IceTest::Image after = type(step.Key);
-    const size_t changed = Differing(before, after);
+    const size_t changed = IceTest::CountDiffering(before, after, 2);
     ok = Expect(step.Changed() && changed > 20 && (!*step.Legend || legendSays(step.Legend)),
            std::string("key '") + step.Key + "': " + step.What + " (" + std::to_string(changed) +
              " pixels changed" +

@@ -1,0 +1,38 @@
+/**
+ * @class   vtkIceBackToFront
+ * @brief   Orders the polygons of its input back to front for an eye point (private to the
+ *          module).
+ *
+ * For alpha blending without depth writes (the ice's air planes): the polygons come out
+ * farthest first, by the distance of their centroid from Eye (in the input's coordinates); ties
+ * keep the input's order. The points and point data are the input's own arrays (shallow copy), so
+ * a new eye changes only the order of the cells: the mapper uploads no vertex again.
+ */
+#ifndef vtkIceBackToFront_h
+#define vtkIceBackToFront_h
+
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkIceBackToFront : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkIceBackToFront* New();
+  vtkTypeMacro(vtkIceBackToFront, vtkPolyDataAlgorithm);
+
+  vtkSetVector3Macro(Eye, double);
+  vtkGetVector3Macro(Eye, double);
+
+protected:
+  vtkIceBackToFront() = default;
+  ~vtkIceBackToFront() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Eye[3] = { 0.0, 0.0, 0.0 };
+
+private:
+  vtkIceBackToFront(const vtkIceBackToFront&) = delete;
+  void operator=(const vtkIceBackToFront&) = delete;
+};
+
+#endif
