@@ -8,6 +8,8 @@
 #include "vtkRenderer.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -55,39 +57,50 @@ bool OnPath(const std::string& program)
   return false;
 }
 
-// Runs ffmpeg on the frames into a temporary file beside the video, renamed once complete.
+// Runs ffmpeg on the frames, reading the video from its standard output, and writes it as every
+// output is written (IceOutputFile: whole or not at all, also when interrupted). A fragmented MP4
+// needs no seeking, so it can come through a pipe.
 std::string EncodeVideo(const std::string& output, int frames, double rate)
 {
   const std::string video = VideoName(output);
-  const auto slash = video.rfind('/');
-  const std::string temporary =
-    (slash == std::string::npos ? std::string() : video.substr(0, slash + 1)) + "." +
-    video.substr(slash == std::string::npos ? 0 : slash + 1) + ".part.mp4";
   const std::string pattern = Stem(output) + "-%04d" + Extension(output);
   const std::string rateText = std::to_string(static_cast<int>(rate));
   const std::string count = std::to_string(frames);
+  int pipeEnds[2];
+  if (pipe(pipeEnds) != 0)
+  {
+    return "cannot run ffmpeg for " + video;
+  }
   const pid_t child = fork();
   if (child == 0)
   {
+    dup2(pipeEnds[1], STDOUT_FILENO);
+    close(pipeEnds[0]);
+    close(pipeEnds[1]);
     // Even sizes for yuv420p, which every player reads.
-    execlp("ffmpeg", "ffmpeg", "-y", "-loglevel", "error", "-framerate", rateText.c_str(), "-i",
+    execlp("ffmpeg", "ffmpeg", "-loglevel", "error", "-framerate", rateText.c_str(), "-i",
       pattern.c_str(), "-frames:v", count.c_str(), "-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2",
-      "-pix_fmt", "yuv420p", temporary.c_str(), static_cast<char*>(nullptr));
+      "-pix_fmt", "yuv420p", "-movflags", "frag_keyframe+empty_moov", "-f", "mp4", "pipe:1",
+      static_cast<char*>(nullptr));
     _exit(127);
   }
+  close(pipeEnds[1]);
+  std::string data;
+  char buffer[65536];
+  ssize_t got;
+  while (child > 0 &&
+    ((got = read(pipeEnds[0], buffer, sizeof(buffer))) > 0 || (got < 0 && errno == EINTR)))
+  {
+    data.append(buffer, static_cast<size_t>(std::max<ssize_t>(got, 0)));
+  }
+  close(pipeEnds[0]);
   int status = 0;
   if (child < 0 || waitpid(child, &status, 0) != child || !WIFEXITED(status) ||
-    WEXITSTATUS(status) != 0)
+    WEXITSTATUS(status) != 0 || data.empty())
   {
-    std::remove(temporary.c_str());
     return "ffmpeg could not encode " + video;
   }
-  if (std::rename(temporary.c_str(), video.c_str()) != 0)
-  {
-    std::remove(temporary.c_str());
-    return "cannot write " + video;
-  }
-  return std::string();
+  return IceOutputFile::Write(video, data);
 }
 }
 
