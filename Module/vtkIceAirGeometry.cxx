@@ -18,6 +18,24 @@
 vtkStandardNewMacro(vtkIceAirGeometry);
 
 //------------------------------------------------------------------------------
+void vtkIceAirGeometry::Placement(
+  int seed, int index, const double bounds[6], vtkTransform* placement)
+{
+  // In the middle 40 % of the bounds, half-sizes of 0.2 to 0.4 of the largest extent.
+  const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 6151U + 7U;
+  double center[3];
+  vtkIceNoise::RandomPlacement(sequence, index, bounds, 0.4, 0.2, 0.4, placement, center);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceAirGeometry::Tile(int index, double tile[2])
+{
+  // Each plane shows one tile of the 2 x 2 atlas, inset against bleeding.
+  tile[0] = 0.5 * (index % 2);
+  tile[1] = 0.5 * ((index / 2) % 2);
+}
+
+//------------------------------------------------------------------------------
 int vtkIceAirGeometry::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -36,24 +54,20 @@ int vtkIceAirGeometry::RequestData(
   vtkNew<vtkFloatArray> normals;
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
-  const std::uint32_t sequence = static_cast<std::uint32_t>(this->Seed) * 6151U + 7U;
   for (int i = 0; i < this->NumberOfPlanes; ++i)
   {
-    // In the middle 40 % of the bounds, half-sizes of 0.2 to 0.4 of the largest extent.
-    double center[3];
     vtkNew<vtkTransform> place;
-    vtkIceNoise::RandomPlacement(sequence, i, bounds, 0.4, 0.2, 0.4, place, center);
-    // Each plane shows one tile of the 2 x 2 atlas, inset against bleeding.
-    const double tileU = 0.5 * (i % 2);
-    const double tileV = 0.5 * ((i / 2) % 2);
+    Placement(this->Seed, i, bounds, place);
+    double tile[2];
+    Tile(i, tile);
     const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
     for (const auto& corner : corners)
     {
       double p[3] = { corner[0], corner[1], 0.0 };
       place->TransformPoint(p, p);
       points->InsertNextPoint(p);
-      uv->InsertNextTuple2(
-        tileU + 0.01 + 0.24 * (corner[0] + 1.0), tileV + 0.01 + 0.24 * (corner[1] + 1.0));
+      uv->InsertNextTuple2(tile[0] + TileInset + TileScale * (corner[0] + 1.0),
+        tile[1] + TileInset + TileScale * (corner[1] + 1.0));
       double n[3] = { 0.0, 0.0, 1.0 };
       place->TransformNormal(n, n);
       vtkMath::Normalize(n);

@@ -13,6 +13,8 @@
 
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkTransform;
+
 class vtkIceAirGeometry : public vtkPolyDataAlgorithm
 {
 public:
@@ -23,6 +25,14 @@ public:
   vtkGetMacro(NumberOfPlanes, int);
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
+
+  // Plane `index` of `seed` in ice of `bounds`: the placement of the square [-1, 1]^2 (z = 0)
+  // and the lower left corner of its atlas tile; a point (x, y) of the square shows the atlas at
+  // tile + TileInset + TileScale (x + 1, y + 1).
+  static void Placement(int seed, int index, const double bounds[6], vtkTransform* placement);
+  static void Tile(int index, double tile[2]);
+  static constexpr double TileInset = 0.01;
+  static constexpr double TileScale = 0.24;
 
 protected:
   vtkIceAirGeometry() = default;

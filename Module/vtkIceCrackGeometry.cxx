@@ -59,6 +59,22 @@ void ClipInside(vtkPolyData* cracks, vtkPolyData* ice, vtkPolyData* output)
 }
 
 //------------------------------------------------------------------------------
+int vtkIceCrackGeometry::ModelSeed(int seed, int index)
+{
+  return GenericCrackModels * seed + index % GenericCrackModels;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCrackGeometry::Placement(
+  int seed, int index, const double bounds[6], vtkTransform* placement)
+{
+  // Near the centre, large enough to span most of the ice.
+  const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 7919U + 1U;
+  double center[3];
+  vtkIceNoise::RandomPlacement(sequence, index, bounds, 0.3, 0.48, 0.72, placement, center);
+}
+
+//------------------------------------------------------------------------------
 int vtkIceCrackGeometry::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -75,18 +91,15 @@ int vtkIceCrackGeometry::RequestData(
   for (int m = 0; m < GenericCrackModels; ++m)
   {
     vtkNew<vtkIceCrackSource> source;
-    source->SetSeed(GenericCrackModels * this->Seed + m);
+    source->SetSeed(ModelSeed(this->Seed, m));
     source->Update();
     models[m] = source->GetOutput();
   }
   vtkNew<vtkAppendPolyData> append;
-  const std::uint32_t sequence = static_cast<std::uint32_t>(this->Seed) * 7919U + 1U;
   for (int i = 0; i < this->NumberOfCracks; ++i)
   {
-    // Near the centre, large enough to span most of the ice.
-    double center[3];
     vtkNew<vtkTransform> placement;
-    vtkIceNoise::RandomPlacement(sequence, i, bounds, 0.3, 0.48, 0.72, placement, center);
+    Placement(this->Seed, i, bounds, placement);
     vtkNew<vtkTransformPolyDataFilter> place;
     place->SetInputData(models[i % GenericCrackModels]);
     place->SetTransform(placement);

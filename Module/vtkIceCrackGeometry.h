@@ -13,6 +13,8 @@
 
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkTransform;
+
 class vtkIceCrackGeometry : public vtkPolyDataAlgorithm
 {
 public:
@@ -25,6 +27,11 @@ public:
   vtkGetMacro(Seed, int);
   vtkSetMacro(ClipToSurface, bool);
   vtkGetMacro(ClipToSurface, bool);
+
+  // Crack `index` of `seed` in ice of `bounds`: its model's seed (vtkIceCrackSource) and the
+  // placement of that model.
+  static int ModelSeed(int seed, int index);
+  static void Placement(int seed, int index, const double bounds[6], vtkTransform* placement);
 
 protected:
   vtkIceCrackGeometry() = default;

@@ -24,18 +24,34 @@ vtkIceCrackSource::vtkIceCrackSource()
 }
 
 //------------------------------------------------------------------------------
+vtkIceCrackSource::Shape vtkIceCrackSource::GetShape(int seed)
+{
+  const std::uint32_t s = static_cast<std::uint32_t>(seed);
+  // Bowl and saddle curvature, roughness, outline raggedness.
+  Shape shape;
+  shape.Bowl = 0.35 * (vtkIceNoise::Uniform(s, 0) - 0.5);
+  shape.Saddle = 0.35 * (vtkIceNoise::Uniform(s, 1) - 0.5);
+  shape.Roughness = 0.04 + 0.04 * vtkIceNoise::Uniform(s, 2);
+  shape.Ragged = 0.25 + 0.2 * vtkIceNoise::Uniform(s, 3);
+  shape.Seed = seed;
+  return shape;
+}
+
+//------------------------------------------------------------------------------
+double vtkIceCrackSource::Shape::OutlineRadius(double angle) const
+{
+  // Varies smoothly (and periodically) with the angle.
+  const double around[3] = { 1.3 * std::cos(angle), 1.3 * std::sin(angle), 0.5 };
+  return 1.0 + this->Ragged * vtkIceNoise::FractalNoise(around, static_cast<std::uint32_t>(this->Seed) + 17);
+}
+
+//------------------------------------------------------------------------------
 int vtkIceCrackSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const Shape shape = GetShape(this->Seed);
   const std::uint32_t seed = static_cast<std::uint32_t>(this->Seed);
-  auto uniform = [seed](std::uint32_t i) { return vtkIceNoise::Uniform(seed, i); };
-
-  // Shape parameters of this model: bowl and saddle curvature, roughness, outline raggedness.
-  const double bowl = 0.35 * (uniform(0) - 0.5);
-  const double saddle = 0.35 * (uniform(1) - 0.5);
-  const double roughness = 0.04 + 0.04 * uniform(2);
-  const double ragged = 0.25 + 0.2 * uniform(3);
 
   vtkNew<vtkPoints> points;
   points->InsertNextPoint(0.0, 0.0, 0.0);
@@ -44,15 +60,12 @@ int vtkIceCrackSource::RequestData(
     for (int sector = 0; sector < this->Sectors; ++sector)
     {
       const double angle = 2.0 * vtkMath::Pi() * sector / this->Sectors;
-      // The outline's radius varies smoothly (and periodically) with the angle.
-      const double around[3] = { 1.3 * std::cos(angle), 1.3 * std::sin(angle), 0.5 };
-      const double outline = 1.0 + ragged * vtkIceNoise::FractalNoise(around, seed + 17);
-      const double r = outline * ring / this->Rings;
+      const double r = shape.OutlineRadius(angle) * ring / this->Rings;
       const double x = r * std::cos(angle);
       const double y = r * std::sin(angle);
       const double p[3] = { 2.0 * x, 2.0 * y, 0.0 };
-      const double z = bowl * (x * x + y * y) + saddle * (x * x - y * y) +
-        roughness * vtkIceNoise::FractalNoise(p, seed + 31);
+      const double z = shape.Bowl * (x * x + y * y) + shape.Saddle * (x * x - y * y) +
+        shape.Roughness * vtkIceNoise::FractalNoise(p, seed + 31);
       points->InsertNextPoint(x, y, z);
     }
   }

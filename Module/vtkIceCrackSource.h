@@ -39,6 +39,22 @@ public:
   vtkGetMacro(Sectors, int);
   ///@}
 
+  /**
+   * The shape of model `seed` (the single-pass interior intersects it analytically): the sheet
+   * is z = Bowl (x^2 + y^2) + Saddle (x^2 - y^2), plus Roughness times noise, inside the outline
+   * radius OutlineRadius(angle).
+   */
+  struct Shape
+  {
+    double Bowl;
+    double Saddle;
+    double Roughness;
+    double Ragged;
+    int Seed;
+    double OutlineRadius(double angle) const;
+  };
+  static Shape GetShape(int seed);
+
 protected:
   vtkIceCrackSource();
   ~vtkIceCrackSource() override = default;
