@@ -99,6 +99,15 @@ vtkIceInterior::vtkIceInterior()
   this->AirTexture->EdgeClampOn();
   this->AirTexture->SetColorModeToDirectScalars();
   this->AirMapper->SetAirTexture(this->AirTexture);
+  // The single pass samples the same images at a level it computes (no derivatives in its
+  // loop): without anisotropic filtering, which llvmpipe makes many times slower there.
+  this->AirAtlas->SetInputConnection(this->AirImages->GetOutputPort());
+  this->AirAtlas->InterpolateOn();
+  this->AirAtlas->MipmapOn();
+  this->AirAtlas->SetMaximumAnisotropicFiltering(1.0);
+  this->AirAtlas->RepeatOff();
+  this->AirAtlas->EdgeClampOn();
+  this->AirAtlas->SetColorModeToDirectScalars();
 }
 
 //------------------------------------------------------------------------------
@@ -161,6 +170,13 @@ void vtkIceInterior::DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* 
 }
 
 //------------------------------------------------------------------------------
+vtkTexture* vtkIceInterior::GetAirAtlas(int seed)
+{
+  this->AirImages->SetSeed(seed);
+  return this->AirAtlas;
+}
+
+//------------------------------------------------------------------------------
 void vtkIceInterior::ForgetRenderPasses()
 {
   this->CrackMapper->ForgetRenderPasses();
@@ -172,4 +188,5 @@ void vtkIceInterior::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->CrackMapper->ReleaseGraphicsResources(window);
   this->AirMapper->ReleaseGraphicsResources(window);
+  this->AirAtlas->ReleaseGraphicsResources(window);
 }

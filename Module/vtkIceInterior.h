@@ -45,6 +45,9 @@ public:
   void DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* iceInput, int number, int seed,
     double milkiness, bool debug);
 
+  // The bubble images of air of `seed`, for the single-pass interior.
+  vtkTexture* GetAirAtlas(int seed);
+
   // See vtkIceWorldSpaceMapper::ForgetRenderPasses.
   void ForgetRenderPasses();
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -57,6 +60,7 @@ private:
   vtkNew<vtkIceBackToFront> AirOrder;
   vtkNew<vtkIceAirTextureSource> AirImages;
   vtkNew<vtkTexture> AirTexture;
+  vtkNew<vtkTexture> AirAtlas; // for the single pass
   vtkNew<vtkIceAirMapper> AirMapper;
   vtkNew<vtkActor> AirActor;
 

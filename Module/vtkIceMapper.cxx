@@ -7,6 +7,7 @@
 #include "vtkIceOptics.h"
 #include "vtkIcePass.h"
 #include "vtkIceShaderSections.h"
+#include "vtkIceSinglePassInterior.h"
 #include "vtkIceStaticEnvironment.h"
 #include "vtkIceSurfaceCheck.h"
 #include "vtkIceSurfaceFS.h"
@@ -35,7 +36,8 @@ enum ShaderParts
 {
   BumpPart = 4,
   NormalMapPart = 8,
-  GlisteningPart = 16
+  GlisteningPart = 16,
+  InteriorPart = 32
 };
 
 // Clamps `value` to [low, high] into `member` as vtkSetClampMacro does, but refuses NaN (which
@@ -66,6 +68,7 @@ vtkIceMapper::vtkIceMapper()
   , FresnelPower(3.0)
   , BackNormalWeight(0.33)
   , IceColor{ 1.0, 1.0, 1.0 }
+  , SinglePass(new vtkIceSinglePassInterior)
   , Interior(new vtkIceInterior)
   , Environment(new vtkIceStaticEnvironment)
 {
@@ -153,6 +156,24 @@ vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
+bool vtkIceMapper::HasInterior()
+{
+  const int view = this->DebugView;
+  if (view == DebugCracksClipped || view == DebugCracksUnclipped || view == DebugAir)
+  {
+    return true;
+  }
+  return view == DebugOff && (this->NumberOfCracks > 0 || this->NumberOfAirPlanes > 0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::UsesSinglePassInterior()
+{
+  return this->InteriorMethod == InteriorSinglePass && this->DebugView != DebugCracksUnclipped &&
+    this->HasInterior();
+}
+
+//------------------------------------------------------------------------------
 int vtkIceMapper::GetFrameNeeds()
 {
   int needs = 0;
@@ -166,10 +187,13 @@ int vtkIceMapper::GetFrameNeeds()
   {
     needs |= NeedsDepthIntervalBeforeScene;
   }
-  // Cracks and air are clipped by the interval and drawn at the ice's front depth.
-  if (this->NumberOfCracks > 0 || this->NumberOfAirPlanes > 0 || view == DebugCracksClipped ||
-    view == DebugCracksUnclipped || view == DebugAir)
+  if (this->UsesSinglePassInterior())
   {
+    needs |= NeedsBackDepthForInterior;
+  }
+  else if (this->HasInterior())
+  {
+    // The paper's cracks and air are clipped by the interval and drawn at the ice's front depth.
     needs |= NeedsDepthIntervalForInterior;
   }
   return needs;
@@ -186,6 +210,10 @@ int vtkIceMapper::ShaderVariant() const
   if (this->Glistening)
   {
     variant |= GlisteningPart;
+  }
+  if (const_cast<vtkIceMapper*>(this)->UsesSinglePassInterior())
+  {
+    variant |= InteriorPart;
   }
   return variant;
 }
@@ -231,6 +259,11 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
   }
   this->Environment->Unbind(ren);
   this->ActiveEnvironmentObject = nullptr;
+  if (this->SinglePassPrepared)
+  {
+    this->SinglePass->Finish(ren);
+    this->SinglePassPrepared = false;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -263,6 +296,14 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
     parts.Hooks.emplace_back("Glistening",
       vtkIceGlistening::Code(
         lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount));
+  }
+  if (variant & InteriorPart)
+  {
+    // Its call fills the Interior hook when vtkIcePass has rendered the back faces' depth.
+    const auto& lights = this->PrimitiveInfo[this->LastBoundBO];
+    parts.FragmentDeclarations += vtkIceSinglePassInterior::Declarations();
+    parts.FragmentFunctions += vtkIceSinglePassInterior::Functions(
+      lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount);
   }
   if (this->DrawingEdges(ren, act))
   {
@@ -329,6 +370,34 @@ void vtkIceMapper::SetIceShaderParameters(
     parameters.SnowAmount = this->SnowAmount;
     parameters.NoiseTextureUnit = noise->GetTextureUnit();
     vtkIceGlistening::SetUniforms(program, ren, act, parameters);
+  }
+  // The single-pass interior, where vtkIcePass has filled its call.
+  if (program->IsUniformUsed("iceInteriorTable"))
+  {
+    if (!this->SinglePassPrepared)
+    {
+      vtkIceSinglePassInterior::Settings settings;
+      settings.Cracks = this->InputFlat ? 0 : this->NumberOfCracks;
+      settings.CrackSeed = this->CrackSeed;
+      settings.CrackIntensity = this->CrackIntensity;
+      settings.CrackBumpFrequency = 8.0 / this->InputExtent();
+      settings.AirPlanes = this->NumberOfAirPlanes;
+      settings.AirSeed = this->AirSeed;
+      settings.Milkiness = this->Milkiness;
+      settings.Debug = this->DebugView == DebugCracksClipped ? 1 : this->DebugView == DebugAir ? 2 : 0;
+      if (this->DebugView == DebugCracksClipped)
+      {
+        settings.AirPlanes = 0;
+      }
+      else if (this->DebugView == DebugAir)
+      {
+        settings.Cracks = 0;
+      }
+      this->SinglePass->Prepare(ren, act, this->PreparedInput, settings,
+        this->Interior->GetAirAtlas(this->AirSeed));
+      this->SinglePassPrepared = true;
+    }
+    this->SinglePass->SetUniforms(program, ren, act);
   }
 }
 
@@ -404,7 +473,8 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
     this->DebugView == DebugCracksUnclipped || this->DebugView == DebugCracksClipped;
   const bool otherDebug = this->DebugView == DebugFrontDepth || this->DebugView == DebugBackDepth ||
     this->DebugView == DebugAir;
-  if (otherDebug || (!overlay && (!this->CracksPerturbRefraction || debugCracks)))
+  if (otherDebug || (!overlay && (!this->CracksPerturbRefraction || debugCracks)) ||
+    (overlay && this->UsesSinglePassInterior()))
   {
     return;
   }
@@ -429,7 +499,8 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
 void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
 {
   const bool debugAir = this->DebugView == DebugAir;
-  if (this->NumberOfAirPlanes == 0 || (this->DebugView != DebugOff && !debugAir))
+  if (this->NumberOfAirPlanes == 0 || (this->DebugView != DebugOff && !debugAir) ||
+    this->UsesSinglePassInterior())
   {
     return;
   }
@@ -448,6 +519,7 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Environment->ReleaseGraphicsResources(win);
   this->Interior->ReleaseGraphicsResources(win);
+  this->SinglePass->ReleaseGraphicsResources(win);
   if (this->GlisteningNoise)
   {
     this->GlisteningNoise->ReleaseGraphicsResources(win);
@@ -465,6 +537,8 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TwoSidedRefraction: " << (this->TwoSidedRefraction ? "On" : "Off") << "\n";
   os << indent << "TwoSidedMethod: "
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
+  os << indent << "InteriorMethod: "
+     << (this->InteriorMethod == InteriorSinglePass ? "SinglePass" : "PaperPasses") << "\n";
   os << indent << "IceColor: (" << this->IceColor[0] << ", " << this->IceColor[1] << ", "
      << this->IceColor[2] << ")\n";
   os << indent << "NumberOfCracks: " << this->NumberOfCracks << "\n";

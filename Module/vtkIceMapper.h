@@ -39,6 +39,7 @@
 
 class vtkActor;
 class vtkIceInterior;
+class vtkIceSinglePassInterior;
 class vtkIceStaticEnvironment;
 class vtkIceGlisteningTexture;
 class vtkProp;
@@ -298,6 +299,30 @@ public:
   vtkGetMacro(SnowAmount, double);
   ///@}
 
+  enum InteriorMethods
+  {
+    InteriorPaperPasses = 0, // the paper: a depth-interval pass, crack and air draws per ice
+    InteriorSinglePass = 1   // in the ice's own fragment shader, intersected along the view ray
+  };
+
+  ///@{
+  /**
+   * How the cracks and air inside the ice are rendered (both need vtkIcePass).
+   * InteriorSinglePass (default): the ice's fragment shader intersects the view ray, from the
+   * front surface to the nearest back face (whose depth the two-sided pass's back-face target
+   * holds), with every crack sheet and air plane and composites them there: no depth-interval
+   * pass, no crack or air draw calls, a few operations per crack and plane per pixel.
+   * InteriorPaperPasses: the paper's method, kept as its reference: the ice's depth interval is
+   * rendered, then the air planes (blended, back to front) and the crack sheets (their
+   * highlights added) are drawn over it. DebugCracksUnclipped, which shows cracks outside the
+   * ice, always uses the paper's passes. Documentation/optics.md compares the two.
+   */
+  vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorSinglePass);
+  vtkGetMacro(InteriorMethod, int);
+  void SetInteriorMethodToSinglePass() { this->SetInteriorMethod(InteriorSinglePass); }
+  void SetInteriorMethodToPaperPasses() { this->SetInteriorMethod(InteriorPaperPasses); }
+  ///@}
+
   enum DebugViews
   {
     DebugOff = 0,
@@ -348,7 +373,8 @@ public:
   {
     NeedsBackfaceNormals = 1,          // two-sided refraction (TwoSidedRefraction)
     NeedsDepthIntervalBeforeScene = 2, // depth debug views; cracks in the back-face normals
-    NeedsDepthIntervalForInterior = 4  // its own interval, right before its cracks and air
+    NeedsDepthIntervalForInterior = 4, // its own interval, right before its cracks and air
+    NeedsBackDepthForInterior = 8      // the back-face target's depth (InteriorSinglePass)
   };
   int GetFrameNeeds();
 
@@ -386,12 +412,17 @@ protected:
   // ray casting); an open one is clipped to the depth interval instead, with one warning.
   int UsableCrackClipping();
 
+  // Whether the interior (cracks or air) is drawn in this frame, and by which method.
+  bool HasInterior();
+  bool UsesSinglePassInterior();
+
   double RefractionRatio;
   double FresnelPower;
   double BackNormalWeight;
   double IceColor[3];
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
+  int InteriorMethod = InteriorSinglePass;
   int NumberOfCracks = 2;
   int CrackSeed = 1;
   double CrackIntensity = 1.0;
@@ -413,6 +444,8 @@ protected:
   vtkSmartPointer<vtkIceGlisteningTexture> GlisteningNoise;
 
   std::map<const vtkOpenGLHelper*, int> ShaderVariantBuilt;
+  std::unique_ptr<vtkIceSinglePassInterior> SinglePass;
+  bool SinglePassPrepared = false; // during a draw
 
   // The renderer's environment or the built-in sky, when no pass hands a dynamic cube map.
   std::unique_ptr<vtkIceStaticEnvironment> Environment;

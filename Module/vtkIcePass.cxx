@@ -10,6 +10,7 @@
 #include "vtkIceRendererSteps.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
+#include "vtkIceSinglePassInterior.h"
 #include "vtkIceTwoSidedFS.h"
 
 #include "vtkActor.h"
@@ -213,7 +214,7 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
   {
     this->RenderDepthInterval(iceState);
   }
-  if (needs & vtkIceMapper::NeedsBackfaceNormals)
+  if (needs & (vtkIceMapper::NeedsBackfaceNormals | vtkIceMapper::NeedsBackDepthForInterior))
   {
     this->BackfaceNormalPass->Render(iceState);
     this->BackfaceNormals = this->BackfaceNormalPass->GetNormalTexture();
@@ -350,6 +351,14 @@ bool vtkIcePass::PostReplaceShaderValues(
       vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
       vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
     }
+  }
+  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackDepthForInterior))
+  {
+    if (fs.find("uniform sampler2D iceBackNormals;") == std::string::npos)
+    {
+      vtkIceShaderSections::InsertDeclarations(fs, "uniform sampler2D iceBackNormals;\n");
+    }
+    vtkIceShaderSections::FillHook(fs, "Interior", vtkIceSinglePassInterior::Call());
   }
   const int view = mapper->GetDebugView();
   if (this->DepthInterval &&

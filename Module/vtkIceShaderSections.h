@@ -19,6 +19,7 @@ struct vtkIceShaderParts
   std::string FragmentDeclarations; // after //VTK::Normal::Dec
   std::string FragmentNormalImpl;   // after //VTK::Normal::Impl: before VTK's lighting
   std::string FragmentImpl;         // after //VTK::Light::Impl: after it
+  std::string FragmentFunctions;    // before main(): after all of VTK's declarations
   // Hooks of the snippets (//ICEHOOK::Name) and the code replacing them. Hooks left empty are
   // comments; a render pass may fill them in its PostReplaceShaderValues.
   std::vector<std::pair<std::string, std::string>> Hooks;
@@ -71,6 +72,7 @@ inline void Insert(const vtkIceShaderParts& parts, std::string& vs, std::string&
   InsertAfterTag(fs, "//VTK::Normal::Dec", parts.FragmentDeclarations);
   InsertAfterTag(fs, "//VTK::Normal::Impl", parts.FragmentNormalImpl);
   InsertAfterTag(fs, "//VTK::Light::Impl", parts.FragmentImpl);
+  InsertDeclarations(fs, parts.FragmentFunctions);
   for (const auto& hook : parts.Hooks)
   {
     FillHook(fs, hook.first, hook.second);

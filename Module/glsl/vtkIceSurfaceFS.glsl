@@ -17,6 +17,7 @@ uniform vec3 iceTint;
     vec3 refracted = texture(iceEnvironment, refractedDirection).rgb;
     vec3 reflected = texture(iceEnvironment, iceReflect(e, nFront)).rgb;
     gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(fresnel, 0.0, 1.0));
+    //ICEHOOK::Interior
     //ICEHOOK::Glistening
     //ICEHOOK::Debug
     //ICEHOOK::Edges

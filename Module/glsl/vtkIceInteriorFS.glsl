@@ -1,0 +1,175 @@
+//ICE::Dec
+// The ice's cracks and air evaluated in the ice's own fragment (vtkIceMapper::InteriorSinglePass):
+// the view ray from this front-surface fragment to the nearest back face (its view depth is in
+// the back-face target's alpha) is intersected with every crack sheet and air plane of
+// vtkIceSinglePassInterior's table; the air is composited over the ice colour back to front, the
+// cracks' highlights are added on top, as the paper's passes composite them.
+uniform sampler2D iceInteriorTable; // R: crack outlines (rows 0-2); then 4 texels per record
+uniform sampler3D iceInteriorBump;  // periodic noise gradient, 8 noise cells per repeat
+uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
+uniform int iceCrackCount;          // records 0 .. iceCrackCount - 1
+uniform int iceAirCount;            // the next records, back to front for this camera
+uniform mat4 iceInteriorWCMC;       // world to (true) model coordinates
+uniform mat4 iceInteriorVCWC;       // view to world, for VTK's light uniforms
+uniform float iceCrackIntensity;
+uniform float iceCrackBumpStrength;
+uniform float iceCrackBumpFrequency; // noise cells per model unit
+uniform float iceMilkiness;          // 0: sparse clear bubbles, 1: white and cloudy
+uniform int iceInteriorDebug;        // 1: cracks solid red, 2: air solid green
+uniform vec3 iceInteriorPixel; // world size of a pixel at view depth 1 (or everywhere, parallel), atlas size
+
+const int iceOutlineSamples = 64; // per crack model, over the full turn
+const int iceRecordsPerRow = 16;
+
+vec4 iceInteriorTexel(int record, int texel)
+{
+  return texelFetch(iceInteriorTable,
+    ivec2(4 * (record % iceRecordsPerRow) + texel, 3 + record / iceRecordsPerRow), 0);
+}
+
+// A record's model-to-local transform (three rows) applied to the ray o + s d.
+struct IceLocalRay
+{
+  vec3 origin;
+  vec3 direction;
+  vec4 row0;
+  vec4 row1;
+  vec4 row2;
+  vec4 shape;
+};
+
+IceLocalRay iceLocalRay(int record, vec3 o, vec3 d)
+{
+  IceLocalRay ray;
+  ray.row0 = iceInteriorTexel(record, 0);
+  ray.row1 = iceInteriorTexel(record, 1);
+  ray.row2 = iceInteriorTexel(record, 2);
+  ray.shape = iceInteriorTexel(record, 3);
+  ray.origin = vec3(dot(ray.row0.xyz, o) + ray.row0.w, dot(ray.row1.xyz, o) + ray.row1.w,
+    dot(ray.row2.xyz, o) + ray.row2.w);
+  ray.direction = vec3(dot(ray.row0.xyz, d), dot(ray.row1.xyz, d), dot(ray.row2.xyz, d));
+  return ray;
+}
+
+// Outline radius of crack model `model` at `angle` (radians), linear between the samples.
+float iceCrackOutline(int model, float angle)
+{
+  float x = fract(angle / 6.2831853) * float(iceOutlineSamples);
+  int i = int(x) % iceOutlineSamples;
+  float r0 = texelFetch(iceInteriorTable, ivec2(i, model), 0).r;
+  float r1 = texelFetch(iceInteriorTable, ivec2((i + 1) % iceOutlineSamples, model), 0).r;
+  return mix(r0, r1, fract(x));
+}
+
+// VTK's specular term of a light travelling along `travel` (world), for the cracks' property of
+// the paper's passes (specular 1, power 40).
+float iceCrackSpecular(vec3 n, vec3 toEye, vec3 travel)
+{
+  float df = max(0.0, dot(n, -travel));
+  return sign(df) * pow(max(0.0, dot(reflect(travel, n), toEye)), 40.0);
+}
+//ICE::Functions
+// Highlights of VTK's lights on a crack at `positionWC` with normal n (facing the viewer).
+vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
+{
+  vec3 light = vec3(0.0);
+  //ICEHOOK::InteriorLights
+  return light;
+}
+
+// Adds the interior behind this fragment to `colour`; `backDepth` is the view depth of the
+// nearest back face (0: none).
+void iceInterior(inout vec3 colour, float backDepth)
+{
+  vec3 e = iceEyeVectorWC(icePositionWCVSOutput);
+  float along = dot(e, iceViewDirectionWC);
+  float sBack = (backDepth - iceViewDepth()) / max(along, 1.0e-6);
+  if (!gl_FrontFacing || backDepth <= 0.0 || sBack <= 0.0)
+  {
+    return;
+  }
+  // The ray in model coordinates: s runs over world units from the front to the back face.
+  vec3 o = icePositionMCVSOutput;
+  vec3 d = mat3(iceInteriorWCMC) * e;
+
+  for (int k = 0; k < iceAirCount; ++k)
+  {
+    IceLocalRay ray = iceLocalRay(iceCrackCount + k, o, d);
+    float s = -ray.origin.z / ray.direction.z;
+    vec2 xy = ray.origin.xy + s * ray.direction.xy;
+    if (!(s > 0.0 && s < sBack) || abs(xy.x) > 1.0 || abs(xy.y) > 1.0)
+    {
+      continue;
+    }
+    vec2 uv = ray.shape.xy + 0.01 + 0.24 * (xy + 1.0);
+    // Mip level: the pixel's footprint on the plane in atlas texels, along the slant (no
+    // derivatives in a loop).
+    float pixel = iceInteriorPixel.x *
+      (iceParallelProjection != 0 ? 1.0 : iceViewDepth() + s * along);
+    float slant = max(abs(ray.direction.z) / length(ray.direction), 0.05);
+    float texels = pixel * length(ray.direction) / slant * 0.24 * iceInteriorPixel.z;
+    vec4 bubble = textureLod(iceAirAtlas, uv, log2(max(texels, 1.0)));
+    if (iceInteriorDebug == 2)
+    {
+      colour = bubble.a < 0.2 ? colour : vec3(0.0, 1.0, 0.0);
+      continue;
+    }
+    float alpha = clamp(bubble.a * mix(0.45, 1.6, iceMilkiness), 0.0, 1.0);
+    colour = mix(colour, mix(bubble.rgb, vec3(1.0), iceMilkiness), alpha);
+  }
+
+  vec3 highlights = vec3(0.0);
+  for (int k = 0; k < iceCrackCount; ++k)
+  {
+    // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s.
+    IceLocalRay ray = iceLocalRay(k, o, d);
+    float a = ray.shape.x;
+    float b = ray.shape.y;
+    vec3 p = ray.origin;
+    vec3 v = ray.direction;
+    float qa = -(a * v.x * v.x + b * v.y * v.y);
+    float qb = v.z - 2.0 * (a * p.x * v.x + b * p.y * v.y);
+    float qc = p.z - a * p.x * p.x - b * p.y * p.y;
+    vec2 roots = vec2(-qc / qb, -1.0);
+    if (abs(qa) > 1.0e-6 * abs(qb))
+    {
+      float discriminant = qb * qb - 4.0 * qa * qc;
+      if (discriminant < 0.0)
+      {
+        continue;
+      }
+      float q = -0.5 * (qb + (qb < 0.0 ? -1.0 : 1.0) * sqrt(discriminant));
+      roots = vec2(q / qa, qc / q);
+    }
+    for (int r = 0; r < 2; ++r)
+    {
+      float s = roots[r];
+      vec3 hit = p + s * v;
+      float radius = length(hit.xy);
+      if (!(s > 0.0 && s < sBack) || radius > 1.5 ||
+        radius > iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x)))
+      {
+        continue;
+      }
+      if (iceInteriorDebug == 1)
+      {
+        colour = vec3(1.0, 0.0, 0.0);
+        return;
+      }
+      // The sheet's normal (gradient of z - a x^2 - b y^2) back in model, then world space,
+      // tilted by the noise fixed to the model, facing the viewer.
+      vec3 g = vec3(-2.0 * a * hit.x, -2.0 * b * hit.y, 1.0);
+      vec3 n = normalize(iceNormalMCWCMatrix * (g.x * ray.row0.xyz + g.y * ray.row1.xyz +
+        g.z * ray.row2.xyz));
+      vec3 positionMC = o + s * d;
+      vec3 gradient = iceNormalMCWCMatrix *
+        textureLod(iceInteriorBump, positionMC * iceCrackBumpFrequency / 8.0, 0.0).xyz;
+      n = normalize(n - iceCrackBumpStrength * (gradient - dot(gradient, n) * n));
+      n = dot(n, e) > 0.0 ? -n : n;
+      highlights += iceCrackLight(n, -e, icePositionWCVSOutput + s * e);
+    }
+  }
+  colour += iceCrackIntensity * highlights;
+}
+//ICE::Call
+    iceInterior(gl_FragData[0].rgb, texelFetch(iceBackNormals, iceScreenTexel(), 0).a);

@@ -1,0 +1,401 @@
+#include "vtkIceSinglePassInterior.h"
+
+#include "vtkIceAirGeometry.h"
+#include "vtkIceCrackGeometry.h"
+#include "vtkIceCrackSource.h"
+#include "vtkIceInteriorFS.h"
+#include "vtkIceNoise.h"
+#include "vtkIceShaderSections.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLTexture.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTransform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace
+{
+const int OutlineSamples = 64; // as iceOutlineSamples
+const int RecordsPerRow = 16;  // as iceRecordsPerRow: 4 texels each, 64 texels a row
+const int BumpSize = 32;       // texels per repeat of the bump texture
+const int BumpCells = 8;       // noise cells per repeat
+
+// The rows of the inverse of `placement` (model to the record's own frame) into `record`.
+void StoreInverse(vtkTransform* placement, float* record)
+{
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(placement->GetMatrix(), inverse);
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      record[4 * row + column] = static_cast<float>(inverse->GetElement(row, column));
+    }
+  }
+}
+
+// Periodic value noise: lattice values of `cells` per repeat, smoothly interpolated.
+double PeriodicValueNoise(const double p[3], int cells, std::uint32_t seed)
+{
+  int i0[3];
+  double f[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const double floor = std::floor(p[c]);
+    i0[c] = static_cast<int>(floor);
+    const double t = p[c] - floor;
+    f[c] = t * t * (3.0 - 2.0 * t);
+  }
+  double value = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double weight = 1.0;
+    std::uint32_t index = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const int bit = (corner >> c) & 1;
+      weight *= bit ? f[c] : 1.0 - f[c];
+      const int lattice = ((i0[c] + bit) % cells + cells) % cells;
+      index = index * static_cast<std::uint32_t>(cells) + static_cast<std::uint32_t>(lattice);
+    }
+    value += weight * vtkIceNoise::Uniform(seed, index);
+  }
+  return value;
+}
+
+// The gradient (in noise cells) of two octaves of periodic value noise, BumpCells cells per
+// repeat: what the crack shader of the paper's passes computes per fragment, looked up instead.
+std::vector<float> BumpGradients()
+{
+  const int n = BumpSize;
+  std::vector<double> value(static_cast<size_t>(n) * n * n);
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double cell = static_cast<double>(BumpCells) / n;
+        const double p[3] = { i * cell, j * cell, k * cell };
+        const double q[3] = { 2.0 * p[0], 2.0 * p[1], 2.0 * p[2] };
+        value[(static_cast<size_t>(k) * n + j) * n + i] = PeriodicValueNoise(p, BumpCells, 11U) +
+          0.5 * PeriodicValueNoise(q, 2 * BumpCells, 23U);
+      }
+    }
+  }
+  std::vector<float> gradients(3 * value.size());
+  auto at = [&](int i, int j, int k) {
+    return value[(static_cast<size_t>((k + n) % n) * n + (j + n) % n) * n + (i + n) % n];
+  };
+  const double perCell = static_cast<double>(n) / BumpCells / 2.0; // central difference
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        float* g = &gradients[3 * ((static_cast<size_t>(k) * n + j) * n + i)];
+        g[0] = static_cast<float>((at(i + 1, j, k) - at(i - 1, j, k)) * perCell);
+        g[1] = static_cast<float>((at(i, j + 1, k) - at(i, j - 1, k)) * perCell);
+        g[2] = static_cast<float>((at(i, j, k + 1) - at(i, j, k - 1)) * perCell);
+      }
+    }
+  }
+  return gradients;
+}
+
+void SetMatrix(vtkShaderProgram* program, const char* name, vtkMatrix4x4* matrix)
+{
+  // VTK uploads a vtkMatrix4x4 as is and GLSL reads columns: the transpose multiplies columns.
+  vtkNew<vtkMatrix4x4> transposed;
+  vtkMatrix4x4::Transpose(matrix, transposed);
+  program->SetUniformMatrix(name, transposed);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkIceSinglePassInterior::vtkIceSinglePassInterior() = default;
+
+//------------------------------------------------------------------------------
+vtkIceSinglePassInterior::~vtkIceSinglePassInterior() = default;
+
+//------------------------------------------------------------------------------
+std::string vtkIceSinglePassInterior::Declarations()
+{
+  return vtkIceShaderSections::Get(vtkIceInteriorFS, "Dec");
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceSinglePassInterior::Functions(int lightComplexity, int lightCount)
+{
+  // VTK's light loop (vtkOpenGLPolyDataMapper): the headlight's specular is n.z in view space;
+  // scene lights reflect about the normal. Positional lights shine from their position, without
+  // VTK's attenuation and cone.
+  std::ostringstream lights;
+  if (lightComplexity == 1 && lightCount > 0)
+  {
+    lights << "  light += pow(max(0.0, dot(n, -iceViewDirectionWC)), 40.0) * lightColor0;\n";
+  }
+  for (int i = 0; lightComplexity >= 2 && i < lightCount; ++i)
+  {
+    const std::string travel = "normalize(mat3(iceInteriorVCWC) * lightDirectionVC" +
+      std::to_string(i) + ")";
+    std::string direction = travel;
+    if (lightComplexity == 3)
+    {
+      direction = "(lightPositional" + std::to_string(i) +
+        " == 1 ? normalize(positionWC - (iceInteriorVCWC * vec4(lightPositionVC" +
+        std::to_string(i) + ", 1.0)).xyz) : " + travel + ")";
+    }
+    lights << "  light += iceCrackSpecular(n, toEye, " << direction << ") * lightColor" << i
+           << ";\n";
+  }
+  std::string code = vtkIceShaderSections::Get(vtkIceInteriorFS, "Functions");
+  vtkShaderProgram::Substitute(code, "//ICEHOOK::InteriorLights", lights.str());
+  return code;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceSinglePassInterior::Call()
+{
+  return vtkIceShaderSections::Get(vtkIceInteriorFS, "Call");
+}
+
+//------------------------------------------------------------------------------
+void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
+{
+  const bool same = this->Placed && ice == this->PlacedFor &&
+    ice->GetMTime() == this->PlacedTime && settings.Cracks == this->Current.Cracks &&
+    settings.CrackSeed == this->Current.CrackSeed &&
+    settings.AirPlanes == this->Current.AirPlanes && settings.AirSeed == this->Current.AirSeed;
+  this->Current = settings;
+  if (same)
+  {
+    return;
+  }
+  this->Placed = true;
+  this->PlacedFor = ice;
+  this->PlacedTime = ice->GetMTime();
+  this->Uploaded = false;
+  double bounds[6];
+  ice->GetBounds(bounds);
+
+  // The three models' outlines and curvatures, as vtkIceCrackGeometry picks them.
+  this->Outlines.assign(3 * OutlineSamples, 0.0f);
+  vtkIceCrackSource::Shape shapes[3];
+  for (int m = 0; m < 3; ++m)
+  {
+    shapes[m] = vtkIceCrackSource::GetShape(vtkIceCrackGeometry::ModelSeed(settings.CrackSeed, m));
+    for (int a = 0; a < OutlineSamples; ++a)
+    {
+      this->Outlines[m * OutlineSamples + a] =
+        static_cast<float>(shapes[m].OutlineRadius(2.0 * vtkMath::Pi() * a / OutlineSamples));
+    }
+  }
+  this->CrackRecords.assign(16 * static_cast<size_t>(settings.Cracks), 0.0f);
+  for (int i = 0; i < settings.Cracks; ++i)
+  {
+    vtkNew<vtkTransform> placement;
+    vtkIceCrackGeometry::Placement(settings.CrackSeed, i, bounds, placement);
+    float* record = &this->CrackRecords[16 * static_cast<size_t>(i)];
+    StoreInverse(placement, record);
+    const vtkIceCrackSource::Shape& shape = shapes[i % 3];
+    record[12] = static_cast<float>(shape.Bowl + shape.Saddle);
+    record[13] = static_cast<float>(shape.Bowl - shape.Saddle);
+    record[14] = static_cast<float>(i % 3);
+  }
+  this->AirRecords.assign(16 * static_cast<size_t>(settings.AirPlanes), 0.0f);
+  this->AirCenters.assign(3 * static_cast<size_t>(settings.AirPlanes), 0.0);
+  for (int i = 0; i < settings.AirPlanes; ++i)
+  {
+    vtkNew<vtkTransform> placement;
+    vtkIceAirGeometry::Placement(settings.AirSeed, i, bounds, placement);
+    float* record = &this->AirRecords[16 * static_cast<size_t>(i)];
+    StoreInverse(placement, record);
+    double tile[2];
+    vtkIceAirGeometry::Tile(i, tile);
+    record[12] = static_cast<float>(tile[0]);
+    record[13] = static_cast<float>(tile[1]);
+    placement->GetPosition(&this->AirCenters[3 * static_cast<size_t>(i)]);
+  }
+  this->AirOrder.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceSinglePassInterior::Order(const double eye[3])
+{
+  // Back to front by the planes' centres, as vtkIceBackToFront orders the paper passes' planes.
+  const int n = this->Current.AirPlanes;
+  std::vector<double> distance(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i)
+  {
+    distance[i] = vtkMath::Distance2BetweenPoints(&this->AirCenters[3 * static_cast<size_t>(i)], eye);
+  }
+  std::vector<int> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(
+    order.begin(), order.end(), [&distance](int a, int b) { return distance[a] > distance[b]; });
+  if (order != this->AirOrder)
+  {
+    this->AirOrder = order;
+    this->Uploaded = false;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceSinglePassInterior::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice,
+  const Settings& settings, vtkTexture* atlas)
+{
+  this->Place(ice, settings);
+  double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
+  renderer->GetActiveCamera()->GetPosition(eye);
+  vtkNew<vtkMatrix4x4> worldToModel;
+  vtkMatrix4x4::Invert(actor->GetMatrix(), worldToModel);
+  worldToModel->MultiplyPoint(eye, eye);
+  this->Order(eye);
+
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  if (!this->Table || this->Table->GetContext() != window)
+  {
+    this->Table = vtkSmartPointer<vtkTextureObject>::New();
+    this->Table->SetContext(window);
+    this->Table->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Table->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Uploaded = false;
+  }
+  if (!this->Uploaded)
+  {
+    // Rows 0-2: the outlines (R); then the records, cracks first, planes back to front.
+    const int records = this->Current.Cracks + this->Current.AirPlanes;
+    const int rows = 3 + std::max(1, (records + RecordsPerRow - 1) / RecordsPerRow);
+    std::vector<float> texels(static_cast<size_t>(4 * OutlineSamples) * rows, 0.0f);
+    for (size_t i = 0; i < this->Outlines.size(); ++i)
+    {
+      texels[4 * i] = this->Outlines[i];
+    }
+    float* first = &texels[static_cast<size_t>(4 * OutlineSamples) * 3];
+    std::copy(this->CrackRecords.begin(), this->CrackRecords.end(), first);
+    float* planes = first + this->CrackRecords.size();
+    for (size_t k = 0; k < this->AirOrder.size(); ++k)
+    {
+      const float* record = &this->AirRecords[16 * static_cast<size_t>(this->AirOrder[k])];
+      std::copy(record, record + 16, planes + 16 * k);
+    }
+    this->Table->Create2DFromRaw(OutlineSamples, rows, 4, VTK_FLOAT, texels.data());
+    this->Uploaded = true;
+  }
+  if (!this->Bump || this->Bump->GetContext() != window)
+  {
+    this->Bump = vtkSmartPointer<vtkTextureObject>::New();
+    this->Bump->SetContext(window);
+    this->Bump->SetWrapS(vtkTextureObject::Repeat);
+    this->Bump->SetWrapT(vtkTextureObject::Repeat);
+    this->Bump->SetWrapR(vtkTextureObject::Repeat);
+    this->Bump->SetMinificationFilter(vtkTextureObject::Linear);
+    this->Bump->SetMagnificationFilter(vtkTextureObject::Linear);
+    std::vector<float> gradients = BumpGradients();
+    this->Bump->Create3DFromRaw(BumpSize, BumpSize, BumpSize, 3, VTK_FLOAT, gradients.data());
+  }
+  this->Table->Activate();
+  this->Bump->Activate();
+  this->ActiveAtlas = settings.AirPlanes > 0 ? atlas : nullptr;
+  if (this->ActiveAtlas)
+  {
+    this->ActiveAtlas->Render(renderer);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceSinglePassInterior::SetUniforms(
+  vtkShaderProgram* program, vtkRenderer* renderer, vtkActor* actor)
+{
+  if (!this->Table)
+  {
+    return;
+  }
+  program->SetUniformi("iceInteriorTable", this->Table->GetTextureUnit());
+  program->SetUniformi("iceInteriorBump", this->Bump->GetTextureUnit());
+  // Without air the atlas sampler still needs a 2D texture's unit: samplers of different types
+  // on one unit (unit 0 by default) make the draw fail.
+  float atlasSize = 1.0f;
+  int atlasUnit = this->Table->GetTextureUnit();
+  if (this->ActiveAtlas)
+  {
+    vtkTextureObject* atlas = static_cast<vtkOpenGLTexture*>(this->ActiveAtlas)->GetTextureObject();
+    atlasUnit = atlas->GetTextureUnit();
+    atlasSize = static_cast<float>(atlas->GetWidth());
+  }
+  program->SetUniformi("iceAirAtlas", atlasUnit);
+  program->SetUniformi("iceCrackCount", this->Current.Cracks);
+  program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->Current.AirPlanes : 0);
+  program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Current.CrackIntensity));
+  program->SetUniformf("iceCrackBumpStrength", 0.6f); // as the paper passes' crack mapper
+  program->SetUniformf(
+    "iceCrackBumpFrequency", static_cast<float>(this->Current.CrackBumpFrequency));
+  program->SetUniformf("iceMilkiness", static_cast<float>(this->Current.Milkiness));
+  program->SetUniformi("iceInteriorDebug", this->Current.Debug);
+
+  vtkNew<vtkMatrix4x4> worldToModel;
+  vtkMatrix4x4::Invert(actor->GetMatrix(), worldToModel);
+  SetMatrix(program, "iceInteriorWCMC", worldToModel);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> viewToWorld;
+  vtkMatrix4x4::Invert(camera->GetModelViewTransformMatrix(), viewToWorld);
+  SetMatrix(program, "iceInteriorVCWC", viewToWorld);
+
+  // A pixel's world size at view depth 1 (perspective) or anywhere (parallel projection).
+  int width;
+  int height;
+  int x;
+  int y;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  const double pixels = std::max(1, camera->GetUseHorizontalViewAngle() ? width : height);
+  const double span = camera->GetParallelProjection()
+    ? 2.0 * camera->GetParallelScale()
+    : 2.0 * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
+  const float pixel[3] = { static_cast<float>(span / pixels), 0.0f, atlasSize };
+  program->SetUniform3f("iceInteriorPixel", pixel);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceSinglePassInterior::Finish(vtkRenderer* renderer)
+{
+  if (this->ActiveAtlas)
+  {
+    this->ActiveAtlas->PostRender(renderer);
+    this->ActiveAtlas = nullptr;
+  }
+  if (this->Table)
+  {
+    this->Table->Deactivate();
+    this->Bump->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceSinglePassInterior::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Table)
+  {
+    this->Table->ReleaseGraphicsResources(window);
+    this->Table = nullptr;
+  }
+  if (this->Bump)
+  {
+    this->Bump->ReleaseGraphicsResources(window);
+    this->Bump = nullptr;
+  }
+  this->Uploaded = false;
+}

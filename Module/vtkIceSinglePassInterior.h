@@ -1,0 +1,79 @@
+// The single-pass interior of one vtkIceMapper (InteriorSinglePass): its cracks and air planes as
+// records in a float texture (placement and shape, the same as the paper passes' geometry), a
+// periodic noise-gradient texture for the cracks' bumps, and the shader code that intersects the
+// view ray with them in the ice's own fragment shader (glsl/vtkIceInteriorFS.glsl).
+#ifndef vtkIceSinglePassInterior_h
+#define vtkIceSinglePassInterior_h
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkActor;
+class vtkOpenGLRenderWindow;
+class vtkPolyData;
+class vtkRenderer;
+class vtkShaderProgram;
+class vtkTexture;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkIceSinglePassInterior
+{
+public:
+  struct Settings
+  {
+    int Cracks = 0;
+    int CrackSeed = 1;
+    double CrackIntensity = 1.0;
+    double CrackBumpFrequency = 1.0; // noise cells per model unit
+    int AirPlanes = 0;
+    int AirSeed = 1;
+    double Milkiness = 0.5;
+    int Debug = 0; // 1: cracks red, 2: air green
+  };
+
+  vtkIceSinglePassInterior();
+  ~vtkIceSinglePassInterior();
+
+  // Declarations (after VTK's normal declarations) and functions (before main, after VTK's light
+  // declarations, for VTK's light loop of this complexity and count).
+  static std::string Declarations();
+  static std::string Functions(int lightComplexity, int lightCount);
+  // The call at the surface shader's Interior hook.
+  static std::string Call();
+
+  // Before a draw of `actor`: the records of `ice` (placed again only when it or a setting
+  // changed), the planes back to front for the active camera, the textures uploaded and
+  // activated. `atlas` is the bubble images (activated here too).
+  void Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice, const Settings& settings,
+    vtkTexture* atlas);
+  void SetUniforms(vtkShaderProgram* program, vtkRenderer* renderer, vtkActor* actor);
+  // After the draw: the textures deactivated.
+  void Finish(vtkRenderer* renderer);
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  void Place(vtkPolyData* ice, const Settings& settings);
+  void Order(const double eye[3]);
+
+  Settings Current;
+  vtkPolyData* PlacedFor = nullptr;
+  vtkMTimeType PlacedTime = 0;
+  bool Placed = false;
+  std::vector<float> Outlines;     // 3 models x 64 radii
+  std::vector<float> CrackRecords; // 16 floats each
+  std::vector<float> AirRecords;   // 16 floats each, in placement order
+  std::vector<double> AirCenters;  // 3 each
+  std::vector<int> AirOrder;       // back to front
+  bool Uploaded = false;
+  vtkSmartPointer<vtkTextureObject> Table;
+  vtkSmartPointer<vtkTextureObject> Bump;
+  vtkTexture* ActiveAtlas = nullptr;
+
+  vtkIceSinglePassInterior(const vtkIceSinglePassInterior&) = delete;
+  void operator=(const vtkIceSinglePassInterior&) = delete;
+};
+
+#endif
