@@ -1,8 +1,10 @@
-// Cracks in a concave object, a torus seen from above at an angle: in DepthInterval mode the
-// interval between the near and far side of the ring also covers the hole, so cracks show there
-// (the paper's known limit); Geometry mode clips them to the surface on the CPU and every crack
-// point lies inside the torus. Left: depth interval, right: geometry, cracks in red. Checked
-// against a reviewed baseline.
+// Cracks in a concave object, a torus seen from above at an angle. Paper passes: in DepthInterval
+// mode the interval between the near and far side of the ring also covers the hole, so cracks
+// show there (the paper's known limit); Geometry mode clips them to the surface on the CPU and
+// every crack point lies inside the torus. The single pass follows each view ray from the front
+// surface to the nearest back face: cracks show only inside the near part of the ring (none in
+// the hole, none seen through it in the far part). Left to right: depth interval, geometry,
+// single pass, cracks in red. Checked against a reviewed baseline.
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
@@ -62,25 +64,27 @@ int TestIceCracksConcave(int argc, char* argv[])
 
   vtkSmartPointer<vtkTexture> sky = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 128);
   vtkNew<vtkRenderWindow> window;
-  window->SetSize(600, 300);
+  window->SetSize(900, 300);
   window->SetOffScreenRendering(1);
-  vtkNew<vtkIceMapper> mappers[2];
-  vtkNew<vtkActor> actors[2];
-  vtkNew<vtkIcePass> passes[2];
-  vtkNew<vtkRenderer> renderers[2];
-  for (int i = 0; i < 2; ++i)
+  vtkNew<vtkIceMapper> mappers[3];
+  vtkNew<vtkActor> actors[3];
+  vtkNew<vtkIcePass> passes[3];
+  vtkNew<vtkRenderer> renderers[3];
+  for (int i = 0; i < 3; ++i)
   {
     mappers[i]->SetInputConnection(source->GetOutputPort());
     mappers[i]->SetNumberOfCracks(4);
     mappers[i]->SetCrackSeed(2);
-    mappers[i]->SetCrackClipping(i == 0 ? vtkIceMapper::DepthInterval : vtkIceMapper::Geometry);
+    mappers[i]->SetInteriorMethod(
+      i < 2 ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorSinglePass);
+    mappers[i]->SetCrackClipping(i == 1 ? vtkIceMapper::Geometry : vtkIceMapper::DepthInterval);
     mappers[i]->SetDebugView(vtkIceMapper::DebugCracksClipped);
     actors[i]->SetMapper(mappers[i]);
     renderers[i]->AddActor(actors[i]);
     renderers[i]->SetEnvironmentTexture(sky);
     renderers[i]->SetBackground(0.15, 0.15, 0.2);
     renderers[i]->SetPass(passes[i]);
-    renderers[i]->SetViewport(0.5 * i, 0.0, 0.5 * (i + 1), 1.0);
+    renderers[i]->SetViewport(i / 3.0, 0.0, (i + 1) / 3.0, 1.0);
     vtkCamera* camera = renderers[i]->GetActiveCamera();
     camera->SetPosition(0.0, -3.6, 0.9);
     camera->SetFocalPoint(0.0, 0.0, 0.0);

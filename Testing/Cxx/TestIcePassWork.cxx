@@ -125,13 +125,19 @@ bool DepthIntervalOnlyWhenRead()
   ok =
     Expect(passesPerFrame() == 0, "no cracks, no air, no debug view: no depth-interval pass") && ok;
   scene.Mapper->SetNumberOfAirPlanes(19);
-  ok = Expect(passesPerFrame() == 2, "air: the depth-interval pass runs") && ok;
+  ok = Expect(passesPerFrame() == 0, "air in a single pass: no depth-interval pass") && ok;
+  scene.Mapper->SetInteriorMethodToPaperPasses();
+  ok = Expect(passesPerFrame() == 2, "air in the paper's passes: the depth-interval pass runs") && ok;
+  scene.Mapper->SetInteriorMethodToSinglePass();
   scene.Mapper->SetNumberOfAirPlanes(0);
   scene.Mapper->SetDebugView(vtkIceMapper::DebugBackDepth);
   ok = Expect(passesPerFrame() == 2, "a depth debug view: the depth-interval pass runs") && ok;
   scene.Mapper->SetDebugView(vtkIceMapper::DebugOff);
   scene.Mapper->SetNumberOfCracks(2);
-  ok = Expect(passesPerFrame() == 2, "cracks: the depth-interval pass runs") && ok;
+  ok = Expect(passesPerFrame() == 0, "cracks in a single pass: no depth-interval pass") && ok;
+  scene.Mapper->SetInteriorMethodToPaperPasses();
+  ok = Expect(passesPerFrame() == 2, "cracks in the paper's passes: the depth-interval pass runs") &&
+    ok;
   return ok;
 }
 
@@ -147,7 +153,20 @@ bool BackfaceNormalsOnlyWhenNeeded()
   bool ok = Expect(passesPerFrame() == 1, "two-sided ice: the back-face pass runs once a frame");
   const IceTest::Image twoSided = IceTest::Capture(scene.Window);
   scene.Mapper->TwoSidedRefractionOff();
-  ok = Expect(passesPerFrame() == 0, "one-sided ice: no back-face pass") && ok;
+  ok = Expect(passesPerFrame() == 1, "one-sided ice with cracks: the back-face pass runs (depth)") &&
+    ok;
+  scene.Mapper->SetNumberOfCracks(0);
+  scene.Mapper->SetNumberOfAirPlanes(0);
+  ok = Expect(passesPerFrame() == 0, "one-sided ice without cracks or air: no back-face pass") && ok;
+  scene.Mapper->SetNumberOfCracks(4);
+  scene.Mapper->SetNumberOfAirPlanes(19);
+  scene.Mapper->SetInteriorMethodToPaperPasses();
+  ok = Expect(passesPerFrame() == 0, "one-sided ice, paper passes: no back-face pass") && ok;
+  scene.Mapper->SetInteriorMethodToSinglePass();
+  scene.Mapper->TwoSidedRefractionOn();
+  const IceTest::Image twoSidedAgain = IceTest::Capture(scene.Window);
+  ok = Expect(IceTest::CountDiffering(twoSided, twoSidedAgain, 0) == 0, "two-sided again") && ok;
+  scene.Mapper->TwoSidedRefractionOff();
   const IceTest::Image oneSided = IceTest::Capture(scene.Window);
   const size_t differing = IceTest::CountDiffering(twoSided, oneSided, 2);
   ok = Expect(differing > 100,

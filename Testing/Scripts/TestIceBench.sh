@@ -22,7 +22,7 @@ fi
 /usr/bin/python3 - <<'PY' || failures=$((failures + 1))
 import csv, math, sys
 
-expected = ("group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,"
+expected = ("group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,interior,"
             "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
             "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
             "cube_faces_per_frame,"
@@ -80,8 +80,11 @@ for r in data:
         problems.append("%s: bad counts" % where)
     if not 0.15 <= t["coverage"] <= 0.25:
         problems.append("%s: coverage %.3f is not about 1/5" % (where, t["coverage"]))
-    if r["material"] not in ("plain", "one-sided", "two-sided", "exit-point", "cracks+air"):
+    if r["material"] not in ("plain", "one-sided", "two-sided", "exit-point", "full-look"):
         problems.append("%s: material %r" % (where, r["material"]))
+    wanted = "" if r["material"] in ("plain", "one-sided") else ("single-pass", "paper-passes")
+    if r["interior"] not in wanted or (not wanted and r["interior"]):
+        problems.append("%s: interior %r" % (where, r["interior"]))
     if r["cube_map"] == "1":
         if r["update_mode"] not in ("every-frame", "on-change") or int(r["face_size"]) not in (128, 256, 512):
             problems.append("%s: cube map settings %r %r" % (where, r["update_mode"], r["face_size"]))
@@ -93,8 +96,8 @@ for r in data:
         problems.append("%s: cube map fields without a cube map" % where)
     if not r["renderer"]:
         problems.append("%s: no renderer string" % where)
-crack_counts = [int(r["cracks"]) for r in groups.get("cracks-teapot", [])[1:]]
-if crack_counts != [0, 2, 8]:
+crack_counts = [(int(r["cracks"]), r["interior"]) for r in groups.get("cracks-teapot", [])[1:]]
+if crack_counts != [(n, m) for m in ("single-pass", "paper-passes") for n in (0, 2, 8)]:
     problems.append("cracks-teapot counts %r" % crack_counts)
 
 markdown = open("bench.md").read()
