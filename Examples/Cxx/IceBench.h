@@ -24,7 +24,7 @@ enum class Material
   Plain,     // plain VTK: a vtkPolyDataMapper, Phong shading (the baseline)
   OneSided,  // vtkIceMapper without vtkIcePass
   TwoSided,  // vtkIceMapper with vtkIcePass; Cracks cracks
-  CracksAir, // vtkIceMapper with vtkIcePass, 2 cracks and 19 air planes
+  FullLook,  // vtkIceMapper with vtkIcePass, 2 cracks, 19 air planes and the default bumps
   ExitPoint  // as TwoSided, with TwoSidedExitPoint instead of the paper's blended normals
 };
 
@@ -44,6 +44,7 @@ struct Configuration
   Material Ice = Material::Plain;
   int Cracks = 0;
   int AirPlanes = 0; // vtkIceMapper::NumberOfAirPlanes
+  bool PaperPasses = false; // vtkIceMapper::InteriorPaperPasses instead of the single pass
   bool CubeMap = false;
   int UpdateMode = 0; // vtkIceCubeMapPass::UpdateModes
   int FaceSize = 512;

@@ -20,13 +20,15 @@ Configuration Plain()
   return c;
 }
 
-Configuration Ice(const std::string& label, Material material, int cracks = 0)
+Configuration Ice(
+  const std::string& label, Material material, int cracks = 0, bool paperPasses = false)
 {
   Configuration c;
   c.Label = label;
   c.Ice = material;
-  c.Cracks = material == Material::CracksAir ? 2 : cracks;
-  c.AirPlanes = material == Material::CracksAir ? 19 : 0;
+  c.Cracks = material == Material::FullLook ? 2 : cracks;
+  c.AirPlanes = material == Material::FullLook ? 19 : 0;
+  c.PaperPasses = paperPasses;
   return c;
 }
 
@@ -62,7 +64,8 @@ std::vector<Group> DefineGroups()
       g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
         Ice("two-sided ice", Material::TwoSided),
         Ice("two-sided ice, exit point", Material::ExitPoint),
-        Ice("two-sided + cracks + air", Material::CracksAir) };
+        Ice("full look, single pass", Material::FullLook),
+        Ice("full look, paper passes", Material::FullLook, 2, true) };
       groups.push_back(g);
     }
   }
@@ -93,10 +96,14 @@ std::vector<Group> DefineGroups()
   cracks.Object = "teapot";
   cracks.Quick = true;
   cracks.Configurations = { Plain() };
-  for (int n : { 0, 2, 8, 32, 128 })
+  for (bool paper : { false, true })
   {
-    cracks.Configurations.push_back(
-      Ice(std::to_string(n) + (n == 1 ? " crack" : " cracks"), Material::TwoSided, n));
+    for (int n : { 0, 2, 8, 32, 128 })
+    {
+      cracks.Configurations.push_back(Ice(std::to_string(n) + (n == 1 ? " crack" : " cracks") +
+          (paper ? ", paper passes" : ", single pass"),
+        Material::TwoSided, n, paper));
+    }
   }
   groups.push_back(cracks);
 

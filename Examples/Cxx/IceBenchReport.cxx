@@ -59,8 +59,8 @@ const char* MaterialName(Material m)
       return "one-sided";
     case Material::TwoSided:
       return "two-sided";
-    case Material::CracksAir:
-      return "cracks+air";
+    case Material::FullLook:
+      return "full-look";
     case Material::ExitPoint:
       return "exit-point";
   }
@@ -70,7 +70,7 @@ const char* MaterialName(Material m)
 std::string Csv(const std::vector<Group>& groups, const Machine& machine)
 {
   std::ostringstream out;
-  out << "group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,"
+  out << "group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,interior,"
          "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
          "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
          "cube_faces_per_frame,"
@@ -83,6 +83,10 @@ std::string Csv(const std::vector<Group>& groups, const Machine& machine)
       out << g.Id << "," << g.Object << "," << g.Triangles << ","
           << (g.Landscape ? "landscape" : "static") << "," << Fixed(g.MeasuredCoverage, 4) << ",\""
           << c.Label << "\"," << MaterialName(c.Ice) << "," << c.Cracks << "," << c.AirPlanes << ","
+          << (c.Ice == Material::Plain || c.Ice == Material::OneSided
+                 ? ""
+                 : (c.PaperPasses ? "paper-passes" : "single-pass"))
+          << ","
           << (c.CubeMap ? 1 : 0) << "," << (c.CubeMap ? modes[c.UpdateMode] : "") << ","
           << (c.CubeMap ? std::to_string(c.FaceSize) : "") << ","
           << (c.CubeMap ? std::to_string(c.FacesPerFrame) : "") << ","

@@ -110,10 +110,15 @@ IceBench::Scene IceBench::BuildScene(
   {
     vtkNew<vtkIceMapper> mapper;
     mapper->SetInputData(object);
-    // The paper's study: no bumps; cracks and air as configured (air only in the "+ cracks +
-    // air" configurations).
-    mapper->SetBumpStrength(0.0);
+    // The paper's study: no bumps; cracks and air as configured (the full look: the default
+    // bumps, 2 cracks and 19 air planes).
+    if (c.Ice != Material::FullLook)
+    {
+      mapper->SetBumpStrength(0.0);
+    }
     mapper->SetNumberOfAirPlanes(0);
+    mapper->SetInteriorMethod(
+      c.PaperPasses ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorSinglePass);
     actor->SetMapper(mapper);
     if (c.Ice == Material::ExitPoint)
     {

@@ -29,6 +29,7 @@ struct Key
 const Key Keys[] = {
   { '1', "one-/two-sided", "two-sided" },
   { '2', "two-sided method", "two-sided-method" },
+  { 'i', "interior method", "interior" },
   { 'c', "cracks on/off", "cracks" },
   { 'a', "air on/off", "air" },
   { 'b', "bumps on/off", "bumps" },
@@ -197,6 +198,9 @@ bool IceViewer::HandleKey(char key)
       break;
     case '2':
       this->Cycle("two-sided-method");
+      break;
+    case 'i':
+      this->Cycle("interior");
       break;
     case 'c':
       this->OffOrBack("cracks", this->Cracks);
