@@ -308,14 +308,14 @@ public:
   ///@{
   /**
    * How the cracks and air inside the ice are rendered (both need vtkIcePass).
-   * InteriorSinglePass (default): the ice's fragment shader intersects the view ray, from the
-   * front surface to the nearest back face (whose depth the two-sided pass's back-face target
-   * holds), with every crack sheet and air plane and composites them there: no depth-interval
-   * pass, no crack or air draw calls, a few operations per crack and plane per pixel.
-   * InteriorPaperPasses: the paper's method, kept as its reference: the ice's depth interval is
-   * rendered, then the air planes (blended, back to front) and the crack sheets (their
-   * highlights added) are drawn over it. DebugCracksUnclipped, which shows cracks outside the
-   * ice, always uses the paper's passes. Documentation/optics.md compares the two.
+   * InteriorPaperPasses (default): the paper's method: the ice's depth interval is rendered,
+   * then the air planes (blended, back to front) and the crack sheets (their highlights added)
+   * are drawn over it. InteriorSinglePass: the ice's fragment shader intersects the view ray,
+   * from the front surface to the nearest back face (whose depth the back-face pass stores), with
+   * every crack sheet and air plane and composites them there: no depth-interval pass, no crack
+   * or air draw call, but every crack and plane is evaluated for every ice pixel. On llvmpipe
+   * the paper's passes are faster at the default look (Documentation/performance.md); the
+   * single pass is the candidate for GPUs. DebugCracksUnclipped always uses the paper's passes.
    */
   vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorSinglePass);
   vtkGetMacro(InteriorMethod, int);
@@ -422,7 +422,7 @@ protected:
   double IceColor[3];
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
-  int InteriorMethod = InteriorSinglePass;
+  int InteriorMethod = InteriorPaperPasses;
   int NumberOfCracks = 2;
   int CrackSeed = 1;
   double CrackIntensity = 1.0;

@@ -329,15 +329,10 @@ void vtkIceSinglePassInterior::SetUniforms(
   program->SetUniformi("iceInteriorBump", this->Bump->GetTextureUnit());
   // Without air the atlas sampler still needs a 2D texture's unit: samplers of different types
   // on one unit (unit 0 by default) make the draw fail.
-  float atlasSize = 1.0f;
-  int atlasUnit = this->Table->GetTextureUnit();
-  if (this->ActiveAtlas)
-  {
-    vtkTextureObject* atlas = static_cast<vtkOpenGLTexture*>(this->ActiveAtlas)->GetTextureObject();
-    atlasUnit = atlas->GetTextureUnit();
-    atlasSize = static_cast<float>(atlas->GetWidth());
-  }
-  program->SetUniformi("iceAirAtlas", atlasUnit);
+  program->SetUniformi("iceAirAtlas",
+    this->ActiveAtlas
+      ? static_cast<vtkOpenGLTexture*>(this->ActiveAtlas)->GetTextureObject()->GetTextureUnit()
+      : this->Table->GetTextureUnit());
   program->SetUniformi("iceCrackCount", this->Current.Cracks);
   program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->Current.AirPlanes : 0);
   program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Current.CrackIntensity));
@@ -354,19 +349,6 @@ void vtkIceSinglePassInterior::SetUniforms(
   vtkNew<vtkMatrix4x4> viewToWorld;
   vtkMatrix4x4::Invert(camera->GetModelViewTransformMatrix(), viewToWorld);
   SetMatrix(program, "iceInteriorVCWC", viewToWorld);
-
-  // A pixel's world size at view depth 1 (perspective) or anywhere (parallel projection).
-  int width;
-  int height;
-  int x;
-  int y;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  const double pixels = std::max(1, camera->GetUseHorizontalViewAngle() ? width : height);
-  const double span = camera->GetParallelProjection()
-    ? 2.0 * camera->GetParallelScale()
-    : 2.0 * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
-  const float pixel[3] = { static_cast<float>(span / pixels), 0.0f, atlasSize };
-  program->SetUniform3f("iceInteriorPixel", pixel);
 }
 
 //------------------------------------------------------------------------------

@@ -16,7 +16,6 @@ uniform float iceCrackBumpStrength;
 uniform float iceCrackBumpFrequency; // noise cells per model unit
 uniform float iceMilkiness;          // 0: sparse clear bubbles, 1: white and cloudy
 uniform int iceInteriorDebug;        // 1: cracks solid red, 2: air solid green
-uniform vec3 iceInteriorPixel; // world size of a pixel at view depth 1 (or everywhere, parallel), atlas size
 
 const int iceOutlineSamples = 64; // per crack model, over the full turn
 const int iceRecordsPerRow = 16;
@@ -92,36 +91,34 @@ void iceInterior(inout vec3 colour, float backDepth)
   vec3 o = icePositionMCVSOutput;
   vec3 d = mat3(iceInteriorWCMC) * e;
 
+  // The loop runs the same number of times for every fragment, and every step samples the atlas:
+  // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform
+  // control flow). A plane missed by this pixel's ray adds nothing (alpha 0). On llvmpipe, which
+  // executes both sides of a branch, this is also the cheapest form.
   for (int k = 0; k < iceAirCount; ++k)
   {
     IceLocalRay ray = iceLocalRay(iceCrackCount + k, o, d);
     float s = -ray.origin.z / ray.direction.z;
     vec2 xy = ray.origin.xy + s * ray.direction.xy;
-    if (!(s > 0.0 && s < sBack) || abs(xy.x) > 1.0 || abs(xy.y) > 1.0)
-    {
-      continue;
-    }
-    vec2 uv = ray.shape.xy + 0.01 + 0.24 * (xy + 1.0);
-    // Mip level: the pixel's footprint on the plane in atlas texels, along the slant (no
-    // derivatives in a loop).
-    float pixel = iceInteriorPixel.x *
-      (iceParallelProjection != 0 ? 1.0 : iceViewDepth() + s * along);
-    float slant = max(abs(ray.direction.z) / length(ray.direction), 0.05);
-    float texels = pixel * length(ray.direction) / slant * 0.24 * iceInteriorPixel.z;
-    vec4 bubble = textureLod(iceAirAtlas, uv, log2(max(texels, 1.0)));
+    bool hit = s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
+    vec4 bubble = texture(iceAirAtlas, ray.shape.xy + 0.01 + 0.24 * (clamp(xy, -1.0, 1.0) + 1.0));
+    float alpha = hit ? clamp(bubble.a * mix(0.45, 1.6, iceMilkiness), 0.0, 1.0) : 0.0;
+    vec3 bubbleColour = mix(bubble.rgb, vec3(1.0), iceMilkiness);
     if (iceInteriorDebug == 2)
     {
-      colour = bubble.a < 0.2 ? colour : vec3(0.0, 1.0, 0.0);
-      continue;
+      alpha = hit && bubble.a >= 0.2 ? 1.0 : 0.0;
+      bubbleColour = vec3(0.0, 1.0, 0.0);
     }
-    float alpha = clamp(bubble.a * mix(0.45, 1.6, iceMilkiness), 0.0, 1.0);
-    colour = mix(colour, mix(bubble.rgb, vec3(1.0), iceMilkiness), alpha);
+    colour = mix(colour, bubbleColour, alpha);
   }
 
+  // Cracks: the same steps for every fragment and crack (see the air), a miss adds nothing.
   vec3 highlights = vec3(0.0);
+  bool crackSeen = false;
   for (int k = 0; k < iceCrackCount; ++k)
   {
-    // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s.
+    // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
+    // shallow sheet at most once inside the outline in practice: the nearer root in the ice.
     IceLocalRay ray = iceLocalRay(k, o, d);
     float a = ray.shape.x;
     float b = ray.shape.y;
@@ -130,46 +127,33 @@ void iceInterior(inout vec3 colour, float backDepth)
     float qa = -(a * v.x * v.x + b * v.y * v.y);
     float qb = v.z - 2.0 * (a * p.x * v.x + b * p.y * v.y);
     float qc = p.z - a * p.x * p.x - b * p.y * p.y;
-    vec2 roots = vec2(-qc / qb, -1.0);
-    if (abs(qa) > 1.0e-6 * abs(qb))
-    {
-      float discriminant = qb * qb - 4.0 * qa * qc;
-      if (discriminant < 0.0)
-      {
-        continue;
-      }
-      float q = -0.5 * (qb + (qb < 0.0 ? -1.0 : 1.0) * sqrt(discriminant));
-      roots = vec2(q / qa, qc / q);
-    }
-    for (int r = 0; r < 2; ++r)
-    {
-      float s = roots[r];
-      vec3 hit = p + s * v;
-      float radius = length(hit.xy);
-      if (!(s > 0.0 && s < sBack) || radius > 1.5 ||
-        radius > iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x)))
-      {
-        continue;
-      }
-      if (iceInteriorDebug == 1)
-      {
-        colour = vec3(1.0, 0.0, 0.0);
-        return;
-      }
-      // The sheet's normal (gradient of z - a x^2 - b y^2) back in model, then world space,
-      // tilted by the noise fixed to the model, facing the viewer.
-      vec3 g = vec3(-2.0 * a * hit.x, -2.0 * b * hit.y, 1.0);
-      vec3 n = normalize(iceNormalMCWCMatrix * (g.x * ray.row0.xyz + g.y * ray.row1.xyz +
-        g.z * ray.row2.xyz));
-      vec3 positionMC = o + s * d;
-      vec3 gradient = iceNormalMCWCMatrix *
-        textureLod(iceInteriorBump, positionMC * iceCrackBumpFrequency / 8.0, 0.0).xyz;
-      n = normalize(n - iceCrackBumpStrength * (gradient - dot(gradient, n) * n));
-      n = dot(n, e) > 0.0 ? -n : n;
-      highlights += iceCrackLight(n, -e, icePositionWCVSOutput + s * e);
-    }
+    float discriminant = qb * qb - 4.0 * qa * qc;
+    float q = -0.5 * (qb + (qb < 0.0 ? -1.0 : 1.0) * sqrt(max(discriminant, 0.0)));
+    bool quadratic = abs(qa) > 1.0e-6 * abs(qb);
+    float s0 = quadratic ? q / qa : -qc / qb;
+    float s1 = quadratic ? qc / q : -1.0;
+    bool in0 = s0 > 0.0 && s0 < sBack;
+    bool in1 = s1 > 0.0 && s1 < sBack;
+    float s = in0 && (!in1 || s0 < s1) ? s0 : s1;
+    vec3 hit = p + s * v;
+    float radius = length(hit.xy);
+    bool seen = discriminant >= 0.0 && (in0 || in1) &&
+      radius <= iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x));
+    crackSeen = crackSeen || seen;
+    // The sheet's normal (gradient of z - a x^2 - b y^2) back in model, then world space,
+    // tilted by the noise fixed to the model (as the paper passes' crack shader, precomputed),
+    // facing the viewer.
+    vec3 g = vec3(-2.0 * a * hit.x, -2.0 * b * hit.y, 1.0);
+    vec3 n = normalize(
+      iceNormalMCWCMatrix * (g.x * ray.row0.xyz + g.y * ray.row1.xyz + g.z * ray.row2.xyz));
+    vec3 gradient = iceNormalMCWCMatrix *
+      textureLod(iceInteriorBump, (o + s * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;
+    n = normalize(n - iceCrackBumpStrength * (gradient - dot(gradient, n) * n));
+    n = dot(n, e) > 0.0 ? -n : n;
+    highlights += seen ? iceCrackLight(n, -e, icePositionWCVSOutput + s * e) : vec3(0.0);
   }
-  colour += iceCrackIntensity * highlights;
+  colour = iceInteriorDebug == 1 && crackSeen ? vec3(1.0, 0.0, 0.0)
+                                              : colour + iceCrackIntensity * highlights;
 }
 //ICE::Call
     iceInterior(gl_FragData[0].rgb, texelFetch(iceBackNormals, iceScreenTexel(), 0).a);

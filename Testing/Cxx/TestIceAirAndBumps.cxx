@@ -106,8 +106,8 @@ bool Air(int method, IceTest::Image& green)
 
 // The bubbles' green masks of both methods nearly coincide: the same planes, images and order.
 // Not exactly: the bubbles' thin rims straddle the debug view's alpha cut, and the single pass
-// picks the mip level from the pixel's footprint where the paper's passes filter anisotropically
-// (0.90 of the pixels agree here; planes placed at random agree on next to none).
+// samples the images without the anisotropic filtering of the paper's passes (0.90 of the pixels
+// agree here; planes placed at random agree on next to none).
 bool MethodsAgree(const IceTest::Image& paper, const IceTest::Image& single)
 {
   size_t both = 0;

@@ -3,7 +3,7 @@
 // Inside the ice the pictures agree closely (mean and 99th percentile of the per-pixel difference
 // bounded) and the interior adds about as much light in both (its mean brightening over the ice
 // without cracks and air, within 30 %); away from the ice they are identical. With VTKICE_FIGURE
-// set to a .png path the test writes the 2 x 2 figure of Documentation/optics.md there (paper
+// set to a .png path the test writes the 2 x 2 figure of Documentation/usage.md there (paper
 // passes left, single pass right).
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
