@@ -18,7 +18,8 @@
  * vtkIcePass also draws the ice's cracks (NumberOfCracks generic crack surfaces placed at random
  * inside, showing only their specular highlights), clipped to the ice either per fragment by its
  * depth interval or once on the CPU (CrackClipping), and its air: NumberOfAirPlanes planes of
- * bubble images that make the ice milky (Milkiness). BumpStrength and BumpScale make the surface
+ * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: the paper's
+ * passes, or in the ice's own fragment shader along the view ray. BumpStrength and BumpScale make the surface
  * bumpy. Air, cracks and bumps are on by default (the paper's full look); set them to 0 for clean
  * optics.
  *
