@@ -1,6 +1,7 @@
 // The ice through the life of an application's windows and scenes:
-// - closing the window (Finalize) releases the ice's graphics resources, and the window opened
-//   again renders the same picture; so does releasing them without closing it;
+// - closing the window (Finalize) releases the ice's graphics resources (with either interior
+//   method), and the window opened again renders the same picture; so does releasing them
+//   without closing it;
 // - a vtkIcePass removed from its renderer and deleted leaves no OpenGL object behind;
 // - two render windows, each with ice, render what each renders alone, also after one closes;
 // - renderers on two layers (ice over a scene) and in two viewports;
@@ -146,28 +147,32 @@ IceTest::Image RenderAlone(int width, int height, double coneX)
   return IceTest::Capture(window);
 }
 
-bool CloseAndReopen()
+bool CloseAndReopen(int interiorMethod)
 {
   bool ok = true;
   IceScene scene;
+  scene.Mapper->SetInteriorMethod(interiorMethod);
+  const std::string method =
+    interiorMethod == vtkIceMapper::InteriorSinglePass ? "single pass: " : "paper passes: ";
   auto window = MakeWindow(scene.Renderer, 240, 180);
   window->Render();
   const IceTest::Image before = IceTest::Capture(window);
   const IceTest::GLCensus census = IceTest::TakeGLCensus(window);
-  ok = Expect(scene.HoldsResources(), "the pass holds its textures while the window is open") && ok;
+  ok = Expect(scene.HoldsResources(), method + "the pass holds its textures while the window is open") &&
+    ok;
 
   window->Finalize();
   ok = Expect(!scene.HoldsResources(),
-         "closing the window (Finalize) released the pass's textures and cube maps") &&
+         method + "closing the window (Finalize) released the pass's textures and cube maps") &&
     ok;
   window->Render();
   const Difference reopened = Compare(before, IceTest::Capture(window));
   ok = Expect(reopened.Max == 0,
-         "the window opened again renders the same picture (" + Describe(reopened) + ")") &&
+         method + "the window opened again renders the same picture (" + Describe(reopened) + ")") &&
     ok;
   const IceTest::GLCensus again = IceTest::TakeGLCensus(window);
   ok = Expect(again.Total() == census.Total(),
-         "the new context holds as many OpenGL objects as the first: " + census.Describe() +
+         method + "the new context holds as many OpenGL objects as the first: " + census.Describe() +
            " and " + again.Describe()) &&
     ok;
 
@@ -594,7 +599,8 @@ bool Translucency(bool depthPeeling)
 
 int TestIceLifecycle(int, char*[])
 {
-  bool ok = CloseAndReopen();
+  bool ok = CloseAndReopen(vtkIceMapper::InteriorPaperPasses);
+  ok = CloseAndReopen(vtkIceMapper::InteriorSinglePass) && ok;
   ok = DeletedPassLeavesNothing() && ok;
   ok = TwoWindows() && ok;
   ok = Layers() && ok;
