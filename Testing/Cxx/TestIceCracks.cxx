@@ -2,7 +2,7 @@
 // crack pixel lies outside the ice's silhouette while many lie inside, and unclipped they do stick
 // out; the highlights change the picture inside the ice only and brighten with the light; the same
 // seed gives the same image and another seed another; the single pass finds the cracks where the
-// paper's passes draw them; the ice costs the same passes and draws per frame whatever
+// paper's passes draw them (perspective and parallel projection); the ice costs the same passes and draws per frame whatever
 // NumberOfCracks (paper passes: two depth passes, one crack draw; single pass: neither); and
 // crack normals perturb the refraction only when asked.
 #include "IceTestUtilities.h"
@@ -11,6 +11,7 @@
 #include "vtkIcePass.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkIceBackfaceNormalPass.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
@@ -133,8 +134,9 @@ bool Light(int method)
 }
 
 // The single pass intersects the cracks the paper's passes draw: their red masks in the convex
-// block nearly coincide (the single pass leaves out the sheets' small noise displacement).
-bool MethodsAgree()
+// block nearly coincide (the single pass leaves out the sheets' small noise displacement), under
+// perspective and parallel projection.
+bool MethodsAgree(bool parallel)
 {
   IceTest::Image masks[2];
   for (int method : { vtkIceMapper::InteriorPaperPasses, vtkIceMapper::InteriorSinglePass })
@@ -143,6 +145,8 @@ bool MethodsAgree()
     scene.Mapper->SetNumberOfCracks(4);
     scene.Mapper->SetInteriorMethod(method);
     scene.Mapper->SetDebugView(vtkIceMapper::DebugCracksClipped);
+    scene.Renderer->GetActiveCamera()->SetParallelProjection(parallel);
+    scene.Renderer->ResetCamera();
     masks[method] = scene.Render();
   }
   size_t both = 0;
@@ -155,9 +159,11 @@ bool MethodsAgree()
     either += paper || single ? 1 : 0;
   }
   const double overlap = either ? static_cast<double>(both) / either : 0.0;
-  std::cout << "crack pixels of both methods over those of either: " << both << " / " << either
-            << " = " << overlap << "\n";
-  return Expect(either > 2000 && overlap > 0.95, "both methods find the cracks in the same place");
+  const std::string projection = parallel ? "parallel projection: " : "perspective: ";
+  std::cout << projection << "crack pixels of both methods over those of either: " << both
+            << " / " << either << " = " << overlap << "\n";
+  return Expect(either > 2000 && overlap > 0.95,
+    projection + "both methods find the cracks in the same place");
 }
 
 bool Seeds(int method)
@@ -239,7 +245,8 @@ int TestIceCracks(int, char*[])
     ok = Seeds(method) && ok;
     ok = PassCount(method) && ok;
   }
-  ok = MethodsAgree() && ok;
+  ok = MethodsAgree(false) && ok;
+  ok = MethodsAgree(true) && ok;
   ok = PerturbRefraction() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
