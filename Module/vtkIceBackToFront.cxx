@@ -16,6 +16,23 @@
 vtkStandardNewMacro(vtkIceBackToFront);
 
 //------------------------------------------------------------------------------
+std::vector<vtkIdType> vtkIceBackToFront::Order(
+  const std::vector<double>& centers, const double eye[3])
+{
+  const size_t n = centers.size() / 3;
+  std::vector<double> distance(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    distance[i] = vtkMath::Distance2BetweenPoints(&centers[3 * i], eye);
+  }
+  std::vector<vtkIdType> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+    [&distance](vtkIdType a, vtkIdType b) { return distance[a] > distance[b]; });
+  return order;
+}
+
+//------------------------------------------------------------------------------
 int vtkIceBackToFront::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -27,26 +44,21 @@ int vtkIceBackToFront::RequestData(
   }
   vtkCellArray* polys = input->GetPolys();
   const vtkIdType n = polys->GetNumberOfCells();
-  std::vector<double> distance(static_cast<size_t>(n));
+  std::vector<double> centroids(3 * static_cast<size_t>(n), 0.0);
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < n; ++c)
   {
     polys->GetCellAtId(c, ids);
-    double centroid[3] = { 0.0, 0.0, 0.0 };
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
       const double* p = input->GetPoint(ids->GetId(k));
       for (int i = 0; i < 3; ++i)
       {
-        centroid[i] += p[i] / ids->GetNumberOfIds();
+        centroids[3 * c + i] += p[i] / ids->GetNumberOfIds();
       }
     }
-    distance[static_cast<size_t>(c)] = vtkMath::Distance2BetweenPoints(centroid, this->Eye);
   }
-  std::vector<vtkIdType> order(static_cast<size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-    [&distance](vtkIdType a, vtkIdType b) { return distance[a] > distance[b]; });
+  const std::vector<vtkIdType> order = Order(centroids, this->Eye);
   vtkNew<vtkCellArray> sorted;
   sorted->AllocateExact(n, polys->GetNumberOfConnectivityIds());
   for (vtkIdType c : order)

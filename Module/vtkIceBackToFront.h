@@ -13,6 +13,8 @@
 
 #include "vtkPolyDataAlgorithm.h"
 
+#include <vector> // for Order
+
 class vtkIceBackToFront : public vtkPolyDataAlgorithm
 {
 public:
@@ -21,6 +23,10 @@ public:
 
   vtkSetVector3Macro(Eye, double);
   vtkGetVector3Macro(Eye, double);
+
+  // The indices of `centers` (x, y, z each) farthest from `eye` first; ties keep their order.
+  // The filter orders its polygons by their centroids so; the single-pass interior its planes.
+  static std::vector<vtkIdType> Order(const std::vector<double>& centers, const double eye[3]);
 
 protected:
   vtkIceBackToFront() = default;

@@ -42,7 +42,8 @@ double vtkIceCrackSource::Shape::OutlineRadius(double angle) const
 {
   // Varies smoothly (and periodically) with the angle.
   const double around[3] = { 1.3 * std::cos(angle), 1.3 * std::sin(angle), 0.5 };
-  return 1.0 + this->Ragged * vtkIceNoise::FractalNoise(around, static_cast<std::uint32_t>(this->Seed) + 17);
+  return 1.0 +
+    this->Ragged * vtkIceNoise::FractalNoise(around, static_cast<std::uint32_t>(this->Seed) + 17);
 }
 
 //------------------------------------------------------------------------------

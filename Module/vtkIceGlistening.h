@@ -29,10 +29,8 @@ struct Parameters
   int NoiseTextureUnit = 0;
 };
 
-// Sets the layer's uniforms: the parameters, world to model for `actor`, view to world for the
-// renderer's camera.
-void SetUniforms(
-  vtkShaderProgram* program, vtkRenderer* renderer, vtkActor* actor, const Parameters& parameters);
+// Sets the layer's uniforms (vtkIceWorldSpaceMapper sets the matrices it reads).
+void SetUniforms(vtkShaderProgram* program, const Parameters& parameters);
 }
 
 #endif

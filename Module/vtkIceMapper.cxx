@@ -156,7 +156,7 @@ vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
-bool vtkIceMapper::HasInterior()
+bool vtkIceMapper::HasInterior() const
 {
   const int view = this->DebugView;
   if (view == DebugCracksClipped || view == DebugCracksUnclipped || view == DebugAir)
@@ -167,7 +167,7 @@ bool vtkIceMapper::HasInterior()
 }
 
 //------------------------------------------------------------------------------
-bool vtkIceMapper::UsesSinglePassInterior()
+bool vtkIceMapper::UsesSinglePassInterior() const
 {
   return this->InteriorMethod == InteriorSinglePass && this->DebugView != DebugCracksUnclipped &&
     this->HasInterior();
@@ -211,7 +211,7 @@ int vtkIceMapper::ShaderVariant() const
   {
     variant |= GlisteningPart;
   }
-  if (const_cast<vtkIceMapper*>(this)->UsesSinglePassInterior())
+  if (this->UsesSinglePassInterior())
   {
     variant |= InteriorPart;
   }
@@ -369,7 +369,7 @@ void vtkIceMapper::SetIceShaderParameters(
     parameters.AlignmentGain = this->GlisteningAlignmentGain;
     parameters.SnowAmount = this->SnowAmount;
     parameters.NoiseTextureUnit = noise->GetTextureUnit();
-    vtkIceGlistening::SetUniforms(program, ren, act, parameters);
+    vtkIceGlistening::SetUniforms(program, parameters);
   }
   // The single-pass interior, where vtkIcePass has filled its call.
   if (program->IsUniformUsed("iceInteriorTable"))
@@ -384,7 +384,9 @@ void vtkIceMapper::SetIceShaderParameters(
       settings.AirPlanes = this->NumberOfAirPlanes;
       settings.AirSeed = this->AirSeed;
       settings.Milkiness = this->Milkiness;
-      settings.Debug = this->DebugView == DebugCracksClipped ? 1 : this->DebugView == DebugAir ? 2 : 0;
+      settings.Debug = this->DebugView == DebugCracksClipped ? 1
+        : this->DebugView == DebugAir                        ? 2
+                                                             : 0;
       if (this->DebugView == DebugCracksClipped)
       {
         settings.AirPlanes = 0;
@@ -393,11 +395,11 @@ void vtkIceMapper::SetIceShaderParameters(
       {
         settings.Cracks = 0;
       }
-      this->SinglePass->Prepare(ren, act, this->PreparedInput, settings,
-        this->Interior->GetAirAtlas(this->AirSeed));
+      this->SinglePass->Prepare(
+        ren, act, this->PreparedInput, settings, this->Interior->GetAirAtlas(this->AirSeed));
       this->SinglePassPrepared = true;
     }
-    this->SinglePass->SetUniforms(program, ren, act);
+    this->SinglePass->SetUniforms(program);
   }
 }
 

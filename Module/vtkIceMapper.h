@@ -19,9 +19,9 @@
  * inside, showing only their specular highlights), clipped to the ice either per fragment by its
  * depth interval or once on the CPU (CrackClipping), and its air: NumberOfAirPlanes planes of
  * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: the paper's
- * passes, or in the ice's own fragment shader along the view ray. BumpStrength and BumpScale make the surface
- * bumpy. Air, cracks and bumps are on by default (the paper's full look); set them to 0 for clean
- * optics.
+ * passes, or in the ice's own fragment shader along the view ray. BumpStrength and BumpScale make
+ * the surface bumpy. Air, cracks and bumps are on by default (the paper's full look); set them to 0
+ * for clean optics.
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn. Flat
@@ -414,8 +414,8 @@ protected:
   int UsableCrackClipping();
 
   // Whether the interior (cracks or air) is drawn in this frame, and by which method.
-  bool HasInterior();
-  bool UsesSinglePassInterior();
+  bool HasInterior() const;
+  bool UsesSinglePassInterior() const;
 
   double RefractionRatio;
   double FresnelPower;

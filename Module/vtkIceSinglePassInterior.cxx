@@ -1,6 +1,7 @@
 #include "vtkIceSinglePassInterior.h"
 
 #include "vtkIceAirGeometry.h"
+#include "vtkIceBackToFront.h"
 #include "vtkIceCrackGeometry.h"
 #include "vtkIceCrackSource.h"
 #include "vtkIceInteriorFS.h"
@@ -22,7 +23,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
 
 namespace
@@ -90,8 +90,8 @@ std::vector<float> BumpGradients()
         const double cell = static_cast<double>(BumpCells) / n;
         const double p[3] = { i * cell, j * cell, k * cell };
         const double q[3] = { 2.0 * p[0], 2.0 * p[1], 2.0 * p[2] };
-        value[(static_cast<size_t>(k) * n + j) * n + i] = PeriodicValueNoise(p, BumpCells, 11U) +
-          0.5 * PeriodicValueNoise(q, 2 * BumpCells, 23U);
+        value[(static_cast<size_t>(k) * n + j) * n + i] =
+          PeriodicValueNoise(p, BumpCells, 11U) + 0.5 * PeriodicValueNoise(q, 2 * BumpCells, 23U);
       }
     }
   }
@@ -116,13 +116,6 @@ std::vector<float> BumpGradients()
   return gradients;
 }
 
-void SetMatrix(vtkShaderProgram* program, const char* name, vtkMatrix4x4* matrix)
-{
-  // VTK uploads a vtkMatrix4x4 as is and GLSL reads columns: the transpose multiplies columns.
-  vtkNew<vtkMatrix4x4> transposed;
-  vtkMatrix4x4::Transpose(matrix, transposed);
-  program->SetUniformMatrix(name, transposed);
-}
 }
 
 //------------------------------------------------------------------------------
@@ -150,14 +143,14 @@ std::string vtkIceSinglePassInterior::Functions(int lightComplexity, int lightCo
   }
   for (int i = 0; lightComplexity >= 2 && i < lightCount; ++i)
   {
-    const std::string travel = "normalize(mat3(iceInteriorVCWC) * lightDirectionVC" +
-      std::to_string(i) + ")";
+    const std::string travel =
+      "normalize(mat3(iceVCWCMatrix) * lightDirectionVC" + std::to_string(i) + ")";
     std::string direction = travel;
     if (lightComplexity == 3)
     {
       direction = "(lightPositional" + std::to_string(i) +
-        " == 1 ? normalize(positionWC - (iceInteriorVCWC * vec4(lightPositionVC" +
-        std::to_string(i) + ", 1.0)).xyz) : " + travel + ")";
+        " == 1 ? normalize(positionWC - (iceVCWCMatrix * vec4(lightPositionVC" + std::to_string(i) +
+        ", 1.0)).xyz) : " + travel + ")";
     }
     lights << "  light += iceCrackSpecular(n, toEye, " << direction << ") * lightColor" << i
            << ";\n";
@@ -176,9 +169,8 @@ std::string vtkIceSinglePassInterior::Call()
 //------------------------------------------------------------------------------
 void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
 {
-  const bool same = this->Placed && ice == this->PlacedFor &&
-    ice->GetMTime() == this->PlacedTime && settings.Cracks == this->Current.Cracks &&
-    settings.CrackSeed == this->Current.CrackSeed &&
+  const bool same = this->Placed && ice == this->PlacedFor && ice->GetMTime() == this->PlacedTime &&
+    settings.Cracks == this->Current.Cracks && settings.CrackSeed == this->Current.CrackSeed &&
     settings.AirPlanes == this->Current.AirPlanes && settings.AirSeed == this->Current.AirSeed;
   this->Current = settings;
   if (same)
@@ -237,16 +229,7 @@ void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
 void vtkIceSinglePassInterior::Order(const double eye[3])
 {
   // Back to front by the planes' centres, as vtkIceBackToFront orders the paper passes' planes.
-  const int n = this->Current.AirPlanes;
-  std::vector<double> distance(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i)
-  {
-    distance[i] = vtkMath::Distance2BetweenPoints(&this->AirCenters[3 * static_cast<size_t>(i)], eye);
-  }
-  std::vector<int> order(static_cast<size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(
-    order.begin(), order.end(), [&distance](int a, int b) { return distance[a] > distance[b]; });
+  const std::vector<vtkIdType> order = vtkIceBackToFront::Order(this->AirCenters, eye);
   if (order != this->AirOrder)
   {
     this->AirOrder = order;
@@ -318,8 +301,7 @@ void vtkIceSinglePassInterior::Prepare(vtkRenderer* renderer, vtkActor* actor, v
 }
 
 //------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::SetUniforms(
-  vtkShaderProgram* program, vtkRenderer* renderer, vtkActor* actor)
+void vtkIceSinglePassInterior::SetUniforms(vtkShaderProgram* program)
 {
   if (!this->Table)
   {
@@ -341,14 +323,6 @@ void vtkIceSinglePassInterior::SetUniforms(
     "iceCrackBumpFrequency", static_cast<float>(this->Current.CrackBumpFrequency));
   program->SetUniformf("iceMilkiness", static_cast<float>(this->Current.Milkiness));
   program->SetUniformi("iceInteriorDebug", this->Current.Debug);
-
-  vtkNew<vtkMatrix4x4> worldToModel;
-  vtkMatrix4x4::Invert(actor->GetMatrix(), worldToModel);
-  SetMatrix(program, "iceInteriorWCMC", worldToModel);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> viewToWorld;
-  vtkMatrix4x4::Invert(camera->GetModelViewTransformMatrix(), viewToWorld);
-  SetMatrix(program, "iceInteriorVCWC", viewToWorld);
 }
 
 //------------------------------------------------------------------------------

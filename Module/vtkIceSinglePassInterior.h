@@ -49,7 +49,8 @@ public:
   // activated. `atlas` is the bubble images (activated here too).
   void Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice, const Settings& settings,
     vtkTexture* atlas);
-  void SetUniforms(vtkShaderProgram* program, vtkRenderer* renderer, vtkActor* actor);
+  // The interior's own uniforms (vtkIceWorldSpaceMapper sets the matrices it reads).
+  void SetUniforms(vtkShaderProgram* program);
   // After the draw: the textures deactivated.
   void Finish(vtkRenderer* renderer);
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -66,7 +67,7 @@ private:
   std::vector<float> CrackRecords; // 16 floats each
   std::vector<float> AirRecords;   // 16 floats each, in placement order
   std::vector<double> AirCenters;  // 3 each
-  std::vector<int> AirOrder;       // back to front
+  std::vector<vtkIdType> AirOrder; // back to front
   bool Uploaded = false;
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> Bump;

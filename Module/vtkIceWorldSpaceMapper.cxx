@@ -287,6 +287,21 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
     program->SetUniformMatrix("iceWCDCMatrix", wcdc);
   }
 
+  // Inverses, for the programs that read them. Uploaded as GLSL reads them: VTK uploads a
+  // vtkMatrix4x4 as is and GLSL reads columns, so the transpose multiplies column vectors.
+  const auto setInverse = [program](const char* name, vtkMatrix4x4* matrix) {
+    if (program->IsUniformUsed(name))
+    {
+      vtkNew<vtkMatrix4x4> inverse;
+      vtkMatrix4x4::Invert(matrix, inverse);
+      inverse->Transpose();
+      program->SetUniformMatrix(name, inverse);
+    }
+  };
+  setInverse("iceWCMCMatrix", act->GetMatrix());
+  // VTK's light uniforms are in the view space of GetModelViewTransformMatrix.
+  setInverse("iceVCWCMatrix", camera->GetModelViewTransformMatrix());
+
   // Not GetProjectionTransformMatrix(ren): that one is transposed and must be deleted.
   vtkMatrix4x4* projection =
     camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0);

@@ -5,8 +5,6 @@
 // (view space) are turned into world directions. Injected at the ice shader's Glistening hook,
 // where gl_FragData[0].rgb holds the ice colour.
 uniform sampler2D iceGlisteningNoise;     // vtkIceGlisteningTexture: unit vector (RGB), number (A)
-uniform mat4 iceGlisteningWCMC;           // world to model: the cracks are fixed to the surface
-uniform mat4 iceGlisteningVCWC;           // view to world, for VTK's light uniforms
 uniform float iceGlisteningScale;         // crack cell size, model units
 uniform float iceGlisteningIntensity;     // glint brightness
 uniform float iceGlisteningAlignmentGain; // glint gain where the view looks along the light
@@ -167,13 +165,13 @@ void iceGlisteningAddSceneLight(IceGlisteningSurface s, vec3 position, int posit
   vec3 directionVC, vec3 positionVC, vec3 attenuation, float coneAngle, float exponent,
   vec3 radiance, inout IceGlisteningSums sums)
 {
-  vec3 travel = normalize(mat3(iceGlisteningVCWC) * directionVC);
+  vec3 travel = normalize(mat3(iceVCWCMatrix) * directionVC);
   if (positional == 0)
   {
     iceGlisteningAddLight(s, -travel, radiance, sums);
     return;
   }
-  vec3 toLight = (iceGlisteningVCWC * vec4(positionVC, 1.0)).xyz - position;
+  vec3 toLight = (iceVCWCMatrix * vec4(positionVC, 1.0)).xyz - position;
   float range = length(toLight);
   vec3 l = toLight / max(range, 1e-20);
   float factor = 1.0 / (attenuation.x + attenuation.y * range + attenuation.z * range * range);
@@ -190,9 +188,9 @@ void iceGlisteningAddSceneLight(IceGlisteningSurface s, vec3 position, int posit
       glisten.normal = normalize(iceNormalWCVSOutput);
       if (gl_FrontFacing == false) { glisten.normal = -glisten.normal; }
       glisten.toEye = -iceEyeVectorWC(icePositionWCVSOutput);
-      vec3 glistenMC = (iceGlisteningWCMC * vec4(icePositionWCVSOutput, 1.0)).xyz;
+      vec3 glistenMC = (iceWCMCMatrix * vec4(icePositionWCVSOutput, 1.0)).xyz;
       // Model-space gradients and normals to world space (the inverse transpose of model to world).
-      mat3 glistenToWorld = transpose(mat3(iceGlisteningWCMC));
+      mat3 glistenToWorld = transpose(mat3(iceWCMCMatrix));
       glisten.wavy = iceGlisteningWavyNormal(glistenMC, glisten.normal, glistenToWorld);
 
       // Crispness: the crack of the cell under the pixel's centre is used, whatever the number of

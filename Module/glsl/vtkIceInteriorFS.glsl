@@ -9,8 +9,6 @@ uniform sampler3D iceInteriorBump;  // periodic noise gradient, 8 noise cells pe
 uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
 uniform int iceCrackCount;          // records 0 .. iceCrackCount - 1
 uniform int iceAirCount;            // the next records, back to front for this camera
-uniform mat4 iceInteriorWCMC;       // world to (true) model coordinates
-uniform mat4 iceInteriorVCWC;       // view to world, for VTK's light uniforms
 uniform float iceCrackIntensity;
 uniform float iceCrackBumpStrength;
 uniform float iceCrackBumpFrequency; // noise cells per model unit
@@ -89,7 +87,7 @@ void iceInterior(inout vec3 colour, float backDepth)
   }
   // The ray in model coordinates: s runs over world units from the front to the back face.
   vec3 o = icePositionMCVSOutput;
-  vec3 d = mat3(iceInteriorWCMC) * e;
+  vec3 d = mat3(iceWCMCMatrix) * e;
 
   // The loop runs the same number of times for every fragment, and every step samples the atlas:
   // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform

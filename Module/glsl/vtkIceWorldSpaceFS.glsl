@@ -4,6 +4,8 @@ in vec3 iceNormalWCVSOutput;
 in vec3 icePositionMCVSOutput;   // model coordinates: stable under camera and actor motion
 in vec3 iceNormalModelVSOutput;
 uniform mat3 iceNormalMCWCMatrix;
+uniform mat4 iceWCMCMatrix; // world to (true) model coordinates: the actor's matrix inverted
+uniform mat4 iceVCWCMatrix; // view to world, for VTK's light uniforms (view space)
 uniform vec3 iceCameraWC;
 uniform vec3 iceViewDirectionWC; // unit direction of projection
 uniform int iceParallelProjection;
