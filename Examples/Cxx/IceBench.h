@@ -21,11 +21,11 @@ constexpr int Height = 768;
 
 enum class Material
 {
-  Plain,     // plain VTK: a vtkPolyDataMapper, Phong shading (the baseline)
-  OneSided,  // vtkIceMapper without vtkIcePass
-  TwoSided,  // vtkIceMapper with vtkIcePass; Cracks cracks
-  FullLook,  // vtkIceMapper with vtkIcePass, 2 cracks, 19 air planes and the default bumps
-  ExitPoint  // as TwoSided, with TwoSidedExitPoint instead of the paper's blended normals
+  Plain,    // plain VTK: a vtkPolyDataMapper, Phong shading (the baseline)
+  OneSided, // vtkIceMapper without vtkIcePass
+  TwoSided, // vtkIceMapper with vtkIcePass; Cracks cracks
+  FullLook, // vtkIceMapper with vtkIcePass, 2 cracks, 19 air planes and the default bumps
+  ExitPoint // as TwoSided, with TwoSidedExitPoint instead of the paper's blended normals
 };
 
 struct Statistics
@@ -43,7 +43,7 @@ struct Configuration
   std::string Label;
   Material Ice = Material::Plain;
   int Cracks = 0;
-  int AirPlanes = 0; // vtkIceMapper::NumberOfAirPlanes
+  int AirPlanes = 0;        // vtkIceMapper::NumberOfAirPlanes
   bool PaperPasses = false; // vtkIceMapper::InteriorPaperPasses instead of the single pass
   bool CubeMap = false;
   int UpdateMode = 0; // vtkIceCubeMapPass::UpdateModes

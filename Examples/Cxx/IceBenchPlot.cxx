@@ -299,8 +299,8 @@ void Triangles(
 void Cracks(
   vtkChartXY* chart, const std::vector<Group>& groups, std::vector<vtkSmartPointer<vtkTable>>& keep)
 {
-  Style(
-    chart, "Cracks: teapot, two-sided, about 1/5 of the screen (log scale)", "cracks", "ms per frame (median)");
+  Style(chart, "Cracks: teapot, two-sided, about 1/5 of the screen (log scale)", "cracks",
+    "ms per frame (median)");
   const Group* g = FindGroup(groups, "cracks-teapot");
   if (!g)
   {

@@ -86,8 +86,7 @@ std::string Csv(const std::vector<Group>& groups, const Machine& machine)
           << (c.Ice == Material::Plain || c.Ice == Material::OneSided
                  ? ""
                  : (c.PaperPasses ? "paper-passes" : "single-pass"))
-          << ","
-          << (c.CubeMap ? 1 : 0) << "," << (c.CubeMap ? modes[c.UpdateMode] : "") << ","
+          << "," << (c.CubeMap ? 1 : 0) << "," << (c.CubeMap ? modes[c.UpdateMode] : "") << ","
           << (c.CubeMap ? std::to_string(c.FaceSize) : "") << ","
           << (c.CubeMap ? std::to_string(c.FacesPerFrame) : "") << ","
           << (c.CubeMap ? (c.Culling ? "1" : "0") : "") << "," << (c.Moving ? 1 : 0) << ","

@@ -122,8 +122,7 @@ bool MethodsAgree(const IceTest::Image& paper, const IceTest::Image& single)
   const double overlap = either ? static_cast<double>(both) / either : 0.0;
   std::cout << "bubble pixels of both methods over those of either: " << both << " / " << either
             << " = " << overlap << "\n";
-  return Expect(
-    either > 1000 && overlap > 0.85, "both methods show the bubbles in the same place");
+  return Expect(either > 1000 && overlap > 0.85, "both methods show the bubbles in the same place");
 }
 
 bool Bumps()

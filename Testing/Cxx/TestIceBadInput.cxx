@@ -303,7 +303,7 @@ bool CheckOpen()
   const DrawnResult interval =
     RenderDrawn(bowl, [](vtkIceMapper* m) { m->SetInteriorMethodToPaperPasses(); });
   ok = Expect(interval.Errors + interval.Warnings == 0 && interval.ConeDrawn &&
-         interval.IcePixels > 1000 && interval.GLErrors.empty(),
+           interval.IcePixels > 1000 && interval.GLErrors.empty(),
          "open surface (a bowl), paper passes, depth-interval crack clipping: " +
            interval.Describe()) &&
     ok;

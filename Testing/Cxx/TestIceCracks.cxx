@@ -2,9 +2,9 @@
 // crack pixel lies outside the ice's silhouette while many lie inside, and unclipped they do stick
 // out; the highlights change the picture inside the ice only and brighten with the light; the same
 // seed gives the same image and another seed another; the single pass finds the cracks where the
-// paper's passes draw them (perspective and parallel projection); the ice costs the same passes and draws per frame whatever
-// NumberOfCracks (paper passes: two depth passes, one crack draw; single pass: neither); and
-// crack normals perturb the refraction only when asked.
+// paper's passes draw them (perspective and parallel projection); the ice costs the same passes and
+// draws per frame whatever NumberOfCracks (paper passes: two depth passes, one crack draw; single
+// pass: neither); and crack normals perturb the refraction only when asked.
 #include "IceTestUtilities.h"
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceMapper.h"
@@ -73,8 +73,8 @@ bool Clipping(int method)
       image, silhouette, [&image](size_t p) { return IsRed(&image.RGB[3 * p]); }, inside, outside);
     const bool clipped = view == vtkIceMapper::DebugCracksClipped;
     std::cout << MethodName(method) << (clipped ? "clipped" : "unclipped")
-              << " cracks in red: " << inside
-              << " pixels inside the silhouette, " << outside << " outside\n";
+              << " cracks in red: " << inside << " pixels inside the silhouette, " << outside
+              << " outside\n";
     ok =
       Expect(clipped ? (outside == 0 && inside > 2000) : outside > 500,
         clipped ? "clipped cracks stay inside the ice and show" : "unclipped cracks stick out") &&
@@ -90,8 +90,8 @@ bool Clipping(int method)
     cracked, silhouette,
     [&](size_t p) { return IceTest::PixelDifference(&clear.RGB[3 * p], &cracked.RGB[3 * p]) > 8; },
     inside, outside);
-  std::cout << MethodName(method) << "highlights change " << inside
-            << " pixels inside the ice, " << outside << " outside\n";
+  std::cout << MethodName(method) << "highlights change " << inside << " pixels inside the ice, "
+            << outside << " outside\n";
   ok = Expect(inside > 200 && outside == 0, "highlights show inside the ice only") && ok;
   return ok;
 }
@@ -160,10 +160,10 @@ bool MethodsAgree(bool parallel)
   }
   const double overlap = either ? static_cast<double>(both) / either : 0.0;
   const std::string projection = parallel ? "parallel projection: " : "perspective: ";
-  std::cout << projection << "crack pixels of both methods over those of either: " << both
-            << " / " << either << " = " << overlap << "\n";
-  return Expect(either > 2000 && overlap > 0.95,
-    projection + "both methods find the cracks in the same place");
+  std::cout << projection << "crack pixels of both methods over those of either: " << both << " / "
+            << either << " = " << overlap << "\n";
+  return Expect(
+    either > 2000 && overlap > 0.95, projection + "both methods find the cracks in the same place");
 }
 
 bool Seeds(int method)
@@ -204,9 +204,8 @@ bool PassCount(int method)
     const vtkIdType frameDraws = scene.Mapper->GetNumberOfCrackDraws() - draws;
     const vtkIdType frameBacks =
       scene.Pass->GetBackfaceNormalPass()->GetNumberOfGeometryPasses() - backs;
-    std::cout << MethodName(method) << cracks << " cracks: " << framePasses
-              << " depth passes, " << frameBacks << " back-face pass and " << frameDraws
-              << " crack draw per frame\n";
+    std::cout << MethodName(method) << cracks << " cracks: " << framePasses << " depth passes, "
+              << frameBacks << " back-face pass and " << frameDraws << " crack draw per frame\n";
     ok = Expect(paper ? (framePasses == 2 && frameDraws == 1 && frameBacks == 1)
                       : (framePasses == 0 && frameDraws == 0 && frameBacks == 1),
            MethodName(method) + std::to_string(cracks) +

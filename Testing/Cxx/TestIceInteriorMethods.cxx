@@ -153,8 +153,7 @@ void WriteFigure(const char* path, const std::vector<IceTest::Image>& images)
       for (int x = 0; x < Width; ++x)
       {
         const unsigned char* p = images[i].At(x, y);
-        unsigned char* q =
-          pixels + 3 * ((row * Height + y) * 2 * Width + column * Width + x);
+        unsigned char* q = pixels + 3 * ((row * Height + y) * 2 * Width + column * Width + x);
         q[0] = p[0];
         q[1] = p[1];
         q[2] = p[2];

@@ -158,7 +158,8 @@ bool CloseAndReopen(int interiorMethod)
   window->Render();
   const IceTest::Image before = IceTest::Capture(window);
   const IceTest::GLCensus census = IceTest::TakeGLCensus(window);
-  ok = Expect(scene.HoldsResources(), method + "the pass holds its textures while the window is open") &&
+  ok = Expect(
+         scene.HoldsResources(), method + "the pass holds its textures while the window is open") &&
     ok;
 
   window->Finalize();
@@ -167,13 +168,15 @@ bool CloseAndReopen(int interiorMethod)
     ok;
   window->Render();
   const Difference reopened = Compare(before, IceTest::Capture(window));
-  ok = Expect(reopened.Max == 0,
-         method + "the window opened again renders the same picture (" + Describe(reopened) + ")") &&
+  ok =
+    Expect(reopened.Max == 0,
+      method + "the window opened again renders the same picture (" + Describe(reopened) + ")") &&
     ok;
   const IceTest::GLCensus again = IceTest::TakeGLCensus(window);
-  ok = Expect(again.Total() == census.Total(),
-         method + "the new context holds as many OpenGL objects as the first: " + census.Describe() +
-           " and " + again.Describe()) &&
+  ok =
+    Expect(again.Total() == census.Total(),
+      method + "the new context holds as many OpenGL objects as the first: " + census.Describe() +
+        " and " + again.Describe()) &&
     ok;
 
   scene.Renderer->ReleaseGraphicsResources(window);

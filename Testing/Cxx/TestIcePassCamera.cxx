@@ -27,7 +27,6 @@ void Count(vtkObject*, unsigned long, void* clientData, void*)
   ++*static_cast<int*>(clientData);
 }
 
-
 bool Run(int interiorMethod)
 {
   vtkNew<vtkIceBlockSource> block;

@@ -125,7 +125,8 @@ bool DepthIntervalOnlyWhenRead()
   ok =
     Expect(passesPerFrame() == 0, "no cracks, no air, no debug view: no depth-interval pass") && ok;
   scene.Mapper->SetNumberOfAirPlanes(19);
-  ok = Expect(passesPerFrame() == 2, "air in the paper's passes: the depth-interval pass runs") && ok;
+  ok =
+    Expect(passesPerFrame() == 2, "air in the paper's passes: the depth-interval pass runs") && ok;
   scene.Mapper->SetInteriorMethodToSinglePass();
   ok = Expect(passesPerFrame() == 0, "air in a single pass: no depth-interval pass") && ok;
   scene.Mapper->SetNumberOfAirPlanes(0);
@@ -135,7 +136,8 @@ bool DepthIntervalOnlyWhenRead()
   scene.Mapper->SetNumberOfCracks(2);
   ok = Expect(passesPerFrame() == 0, "cracks in a single pass: no depth-interval pass") && ok;
   scene.Mapper->SetInteriorMethodToPaperPasses();
-  ok = Expect(passesPerFrame() == 2, "cracks in the paper's passes: the depth-interval pass runs") &&
+  ok =
+    Expect(passesPerFrame() == 2, "cracks in the paper's passes: the depth-interval pass runs") &&
     ok;
   return ok;
 }
@@ -153,11 +155,13 @@ bool BackfaceNormalsOnlyWhenNeeded()
   bool ok = Expect(passesPerFrame() == 1, "two-sided ice: the back-face pass runs once a frame");
   const IceTest::Image twoSided = IceTest::Capture(scene.Window);
   scene.Mapper->TwoSidedRefractionOff();
-  ok = Expect(passesPerFrame() == 1, "one-sided ice with cracks: the back-face pass runs (depth)") &&
+  ok =
+    Expect(passesPerFrame() == 1, "one-sided ice with cracks: the back-face pass runs (depth)") &&
     ok;
   scene.Mapper->SetNumberOfCracks(0);
   scene.Mapper->SetNumberOfAirPlanes(0);
-  ok = Expect(passesPerFrame() == 0, "one-sided ice without cracks or air: no back-face pass") && ok;
+  ok =
+    Expect(passesPerFrame() == 0, "one-sided ice without cracks or air: no back-face pass") && ok;
   scene.Mapper->SetNumberOfCracks(4);
   scene.Mapper->SetNumberOfAirPlanes(19);
   scene.Mapper->SetInteriorMethodToPaperPasses();
