@@ -6,6 +6,8 @@
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
 #   ./ice.sh valgrind [frames]            build, then valgrind memcheck on one full-ice run
+#   ./ice.sh paraview [ctest options]     install ParaView 5.11 (replacing Debian's VTK 9.1 dev
+#                                         packages), build the ParaView plugin, run its tests
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
 # run again through EGL with no DISPLAY at all (Documentation/headless.md).
@@ -58,6 +60,20 @@ case "$command" in
       ctest --test-dir "$build_dir" --output-on-failure -L backend "$@" || status=1
     exit "$status"
     ;;
+  paraview)
+    # ParaView's own VTK: a build of its own in build-paraview; the other commands reinstall
+    # Debian's VTK 9.1 when they run (.ci/install-deps.sh). Documentation/paraview.md.
+    bash .ci/install-deps.sh paraview
+    pv_build_dir=${VTKICE_PARAVIEW_BUILD_DIR:-build-paraview}
+    if [ ! -f "$pv_build_dir/build.ninja" ]; then
+      cmake -S ParaView -B "$pv_build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+        -DPython3_EXECUTABLE=/usr/bin/python3
+    fi
+    cmake --build "$pv_build_dir"
+    # A tall screen: the GUI test's screenshot shows the Ice property group.
+    xvfb-run -a -s "-screen 0 1280x1400x24 -noreset" \
+      ctest --test-dir "$pv_build_dir" --output-on-failure "$@"
+    ;;
   soak)
     build
     exec Testing/Scripts/soak.sh "$@"
@@ -69,7 +85,8 @@ case "$command" in
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
       "| ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
-      "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" >&2
+      "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
+      "| ./ice.sh paraview [ctest options]" >&2
     exit 2
     ;;
 esac

@@ -3,13 +3,28 @@
 # (Xvfb for the X tests; Mesa EGL and OSMesa for rendering without X), to make and check its
 # Debian package (dpkg-dev, lintian) and the turntable's video (ffmpeg).
 # Skips apt-get entirely when every package is already installed.
+#   .ci/install-deps.sh            Debian's VTK 9.1 and everything the main build and tests use
+#   .ci/install-deps.sh paraview   Debian's ParaView 5.11 (with its own VTK 9.2) for the plugin
+# The two VTKs cannot be installed together: apt replaces one by the other, so each stage calls
+# this first and finds what it needs whatever ran before.
 set -euo pipefail
-packages=(
-  libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config
-  libglm-dev libopenimageio-dev
-  xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
-  dpkg-dev lintian ffmpeg
-)
+recommends=--no-install-recommends
+if [ "${1:-}" = paraview ]; then
+  # The GUI test's screenshot uses xwd (x11-apps) and ImageMagick. ParaView's recommended
+  # packages (Qt's platform and image plugins among them) are what the GUI was tested with.
+  packages=(
+    paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config
+    libglm-dev libopenimageio-dev xvfb xauth libgl1-mesa-dri x11-apps imagemagick
+  )
+  recommends=
+else
+  packages=(
+    libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config
+    libglm-dev libopenimageio-dev
+    xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
+    dpkg-dev lintian ffmpeg
+  )
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
@@ -22,4 +37,4 @@ SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+$SUDO apt-get install -y -qq $recommends "${missing[@]}"

@@ -351,6 +351,15 @@ void vtkIceCubeMapPass::Update()
 vtkTextureObject* vtkIceCubeMapPass::GetCubeMap(vtkProp* iceProp)
 {
   auto found = this->Internals->Maps.find(iceProp);
+  if (found == this->Internals->Maps.end() && iceProp && iceProp->GetPropertyKeys())
+  {
+    // A prop that draws through an inner actor sharing its property keys (ParaView's
+    // vtkPVLODActor): the mapper is handed the inner actor.
+    found = std::find_if(this->Internals->Maps.begin(), this->Internals->Maps.end(),
+      [iceProp](const auto& entry) {
+        return entry.first->GetPropertyKeys() == iceProp->GetPropertyKeys();
+      });
+  }
   return found != this->Internals->Maps.end() && found->second.Rendered
     ? found->second.Texture.Get()
     : nullptr;

@@ -18,6 +18,7 @@
 #include "vtkActor.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -241,7 +242,9 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   // A dynamic cube map is handed to the shader by the pass that rendered it.
   vtkIcePass* pass = vtkIcePass::GetIcePassOf(act);
   this->ActiveEnvironmentObject =
-    pass && pass->GetCubeMapOf(act) ? nullptr : this->Environment->Bind(ren, this);
+    pass && pass->GetCubeMapOf(act)
+    ? nullptr
+    : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
   if (this->NormalMap && this->BumpStrength > 0.0)
   {
     this->NormalMap->Render(ren);
@@ -267,6 +270,14 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+bool vtkIceMapper::DrawsScalarColors()
+{
+  // The conditions of VTK's ReplaceShaderColor (the copy drawn has no cell scalars).
+  return this->VBOs->GetNumberOfComponents("scalarColor") != 0 ||
+    (this->InterpolateScalarsBeforeMapping && this->ColorCoordinates);
+}
+
+//------------------------------------------------------------------------------
 void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren, vtkActor* act)
 {
   using vtkIceShaderSections::Get;
@@ -278,6 +289,13 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   parts.VertexImpl += Get(vtkIceSurfaceVS, "Impl");
   parts.FragmentDeclarations += optics + Get(vtkIceSurfaceFS, "Dec");
   parts.FragmentImpl += Get(vtkIceSurfaceFS, "Impl");
+  if (this->DrawsScalarColors())
+  {
+    // VTK's colour code (before the lighting) holds the mapped colour times the diffuse
+    // intensity; the mapped colour replaces IceColor as the tint.
+    parts.Hooks.emplace_back(
+      "ScalarColor", "iceColor = diffuseColor / max(diffuseIntensity, 1.0e-6);");
+  }
   if (variant & BumpPart)
   {
     parts.FragmentDeclarations += Get(vtkIceValueNoise, "Dec") + Get(vtkIceBumpFS, "Dec");
@@ -323,6 +341,12 @@ void vtkIceMapper::SetIceShaderParameters(
   program->SetUniform3f("iceTint", tint);
   program->SetUniformf("iceRefractionRatio", static_cast<float>(this->RefractionRatio));
   program->SetUniformf("iceFresnelPower", static_cast<float>(this->FresnelPower));
+  // A dynamic cube map holds the scene at the raw world direction.
+  static const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  program->SetUniformMatrix3x3("iceEnvironmentMatrix",
+    const_cast<float*>(this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity));
+  program->SetUniformi("iceEnvironmentColorSpace",
+    this->ActiveEnvironmentObject ? this->Environment->GetColorSpace() : 0);
   if (this->ActiveEnvironmentObject)
   {
     program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());

@@ -124,8 +124,22 @@ public:
 
   ///@{
   /**
+   * Whether the mapper warns (once) when the renderer has no usable environment texture and the
+   * ice reflects the built-in sky. Default on. ParaView's Ice representation turns it off: its
+   * views have no environment unless the background is a skybox, and the sky is the default there.
+   */
+  vtkSetMacro(WarnWithoutEnvironment, bool);
+  vtkGetMacro(WarnWithoutEnvironment, bool);
+  vtkBooleanMacro(WarnWithoutEnvironment, bool);
+  ///@}
+
+  ///@{
+  /**
    * Tint multiplied into the ice colour, each component clamped to [0, 1]. Default white. A
-   * colour with a NaN component is refused with a warning.
+   * colour with a NaN component is refused with a warning. When the mapper colours by scalars
+   * (ScalarVisibility with point scalars or a selected point array, mapped through the lookup
+   * table as by any VTK mapper), the mapped colour of each point is the tint instead; refraction
+   * and reflection stay. Cell arrays do not tint the ice.
    */
   virtual void SetIceColor(double red, double green, double blue);
   virtual void SetIceColor(const double color[3])
@@ -405,6 +419,8 @@ protected:
   // Which optional shader parts of the mapper's own the next build includes (bumps, glistening;
   // vtkIcePass adds the parts that sample its textures).
   int ShaderVariant() const;
+  // Whether VTK's colour code of the bound primitive holds colours mapped from scalars.
+  bool DrawsScalarColors();
 
   // Looks at a new input: flat input (no volume, hence no inside) gets no cracks.
   void InputPrepared() override;
@@ -430,6 +446,7 @@ protected:
   int CrackClipping = DepthInterval;
   bool CracksPerturbRefraction = false;
   int DebugView = DebugOff;
+  bool WarnWithoutEnvironment = true;
   int NumberOfAirPlanes = 19;
   int AirSeed = 1;
   double Milkiness = 0.5;

@@ -1,14 +1,20 @@
 #include "vtkIceStaticEnvironment.h"
 
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceVTKCompat.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkFloatArray.h"
+#include "vtkEquirectangularToCubeMapTexture.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLTexture.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace
 {
@@ -36,6 +42,31 @@ bool HasFaceImages(vtkTexture* texture)
   }
   return true;
 }
+
+// The colours of an sRGB image as linear floats (alpha dropped).
+vtkSmartPointer<vtkImageData> DecodeSRGB(vtkImageData* image)
+{
+  vtkDataArray* stored = image->GetPointData()->GetScalars();
+  const int components = std::min(stored->GetNumberOfComponents(), 3);
+  const vtkIdType count = stored->GetNumberOfTuples();
+  vtkNew<vtkFloatArray> linear;
+  linear->SetNumberOfComponents(3);
+  linear->SetNumberOfTuples(count);
+  const double scale = stored->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = scale * stored->GetComponent(i, std::min(c, components - 1));
+      linear->SetComponent(
+        i, c, v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+    }
+  }
+  auto decoded = vtkSmartPointer<vtkImageData>::New();
+  decoded->CopyStructure(image);
+  decoded->GetPointData()->SetScalars(linear);
+  return decoded;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -43,21 +74,62 @@ vtkTexture* vtkIceStaticEnvironment::Select(vtkRenderer* renderer, vtkObject* ow
 {
   vtkTexture* env = renderer->GetEnvironmentTexture();
   const bool cubeMap = env && env->GetCubeMap();
+  const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  std::copy(identity, identity + 9, this->LookupMatrix);
+  const bool srgb = env && env->GetUseSRGBColorSpace();
+  this->ColorSpace = srgb ? FromLinear : AsSampled;
   if (cubeMap && HasFaceImages(env))
   {
+    if (vtkIceVTKCompat::CubeMapLookupFlipsZ)
+    {
+      this->LookupMatrix[8] = -1;
+    }
     return env;
   }
-  if (!this->Warned)
+  auto* image = vtkOpenGLTexture::SafeDownCast(env);
+  if (image && !cubeMap && HasFaceImages(image))
+  {
+    // An equirectangular panorama. VTK's conversion puts the panorama's pixel at longitude
+    // atan2(z, x), latitude asin(y) into the cube texel of direction (x, y, z): the mapping of
+    // vtkSkybox's sphere projection in ParaView's orientation, so the raw direction lines up.
+    if (!this->Converted || this->PanoramaSource != image)
+    {
+      this->PanoramaSource = image;
+      this->Panorama = vtkSmartPointer<vtkOpenGLTexture>::New();
+      // No mipmaps: the longitude seam of the conversion's lookup would pick the smallest level.
+      this->Panorama->InterpolateOn();
+      this->Panorama->SetColorModeToDirectScalars();
+      this->Converted = vtkSmartPointer<vtkEquirectangularToCubeMapTexture>::New();
+      this->Converted->SetInputTexture(this->Panorama);
+      this->Converted->SetCubeMapSize(512);
+      this->Converted->InterpolateOn();
+      this->PanoramaTime = 0;
+    }
+    vtkImageData* pixels = image->GetInput();
+    if (pixels->GetMTime() != this->PanoramaTime)
+    {
+      // VTK gives the cube map the panorama's texture format: an sRGB one would be decoded
+      // twice. Decoded here into floats instead, the cube map is filtered in linear space, as
+      // the skybox filters its sRGB texture.
+      this->PanoramaTime = pixels->GetMTime();
+      this->Panorama->SetInputData(srgb ? DecodeSRGB(pixels).GetPointer() : pixels);
+    }
+    this->ColorSpace = srgb ? FromLinear : AsSampled;
+    return this->Converted;
+  }
+  if (owner && !this->Warned)
   {
     vtkWarningWithObjectMacro(
       owner, << (!env          ? "The renderer has no environment texture"
-                    : !cubeMap ? "The renderer's environment texture is not a cube map"
+                    : !cubeMap ? "The renderer's environment texture is neither a cube map nor "
+                                 "an image"
                                : "The renderer's environment cube map has faces without "
                                  "an image (did its reader fail?)")
              << "; the ice reflects a built-in sky. Set a vtkTexture with CubeMapOn() "
                 "with vtkRenderer::SetEnvironmentTexture.");
     this->Warned = true;
   }
+  this->ColorSpace = AsSampled;
   if (!this->Fallback)
   {
     vtkNew<vtkIceCubeMapSource> sky;
@@ -89,6 +161,11 @@ void vtkIceStaticEnvironment::Unbind(vtkRenderer* renderer)
 //------------------------------------------------------------------------------
 void vtkIceStaticEnvironment::ReleaseGraphicsResources(vtkWindow* window)
 {
+  if (this->Converted)
+  {
+    this->Converted->ReleaseGraphicsResources(window);
+    this->Panorama->ReleaseGraphicsResources(window);
+  }
   if (this->Fallback)
   {
     this->Fallback->ReleaseGraphicsResources(window);

@@ -88,10 +88,9 @@ bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
   }
   iceNormals->SetName(IceNormalArray);
   this->PreparedInput->GetPointData()->AddArray(iceNormals);
-  // The ice has its own colour: the copy drawn holds no scalars (MapScalars maps from it), so VTK
-  // builds no colour buffers; with the input's cell scalars VTK 9.1 drew some triangles as
-  // garbage. The copy's attribute lists are its own (ShallowCopy): the input keeps its scalars.
-  this->PreparedInput->GetPointData()->SetScalars(nullptr);
+  // Point scalars stay: with ScalarVisibility they tint the ice (vtkIceMapper). Cell data goes:
+  // with cell scalars VTK 9.1 drew some triangles of the copy as garbage. The copy's attribute
+  // lists are its own (ShallowCopy): the input keeps its cell data.
   this->PreparedInput->GetCellData()->Initialize();
   this->PreparedValid = true;
   this->InputPrepared();

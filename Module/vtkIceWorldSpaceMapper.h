@@ -31,6 +31,16 @@ public:
   vtkTypeMacro(vtkIceWorldSpaceMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * Scalars are mapped from the drawn copy of the input, which keeps the input's point arrays
+   * and no cell data. (Mapped from the input, scalars gave colours to a copy that may have other
+   * points, which VTK then drew as cell colours: garbage.) Public, as in vtkMapper.
+   */
+  using Superclass::MapScalars;
+  vtkUnsignedCharArray* MapScalars(vtkDataSet* input, double alpha, int& cellFlag) override;
+  ///@}
+
   /**
    * Validates the input and adds normals before the usual OpenGL rendering.
    */
@@ -66,13 +76,6 @@ protected:
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
 
-  /**
-   * Scalars are mapped from the drawn copy of the input, which holds none: the ice has its own
-   * colour. (Mapped from the input, point scalars gave colours to a copy without them, which VTK
-   * then drew as cell colours: garbage.)
-   */
-  using Superclass::MapScalars;
-  vtkUnsignedCharArray* MapScalars(vtkDataSet* input, double alpha, int& cellFlag) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;

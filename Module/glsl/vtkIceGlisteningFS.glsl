@@ -124,7 +124,7 @@ vec3 iceGlisteningAmbient(vec3 n)
   {
     float w = 0.5 + 0.5 * dot(n, axes[i]);
     w *= w;
-    sum += w * texture(iceEnvironment, axes[i]).rgb;
+    sum += w * iceEnvironmentColor(axes[i]);
     weights += w;
   }
   return sum / weights;

@@ -1,6 +1,16 @@
 //ICE::Dec
 in float iceFresnelFactorVSOutput;
 uniform samplerCube iceEnvironment;
+// World direction to the environment texture's lookup direction, and how to show its colours as
+// vtkSkybox (gamma-corrected, as ParaView uses it) shows them: 0 as sampled, 1 linear values of
+// an sRGB environment (vtkIceStaticEnvironment).
+uniform mat3 iceEnvironmentMatrix;
+uniform int iceEnvironmentColorSpace;
+vec3 iceEnvironmentColor(vec3 directionWC)
+{
+  vec3 color = texture(iceEnvironment, iceEnvironmentMatrix * directionWC).rgb;
+  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+}
 uniform float iceRefractionRatio;
 uniform vec3 iceTint;
 //ICE::Impl
@@ -14,9 +24,11 @@ uniform vec3 iceTint;
     //ICEHOOK::RefractionNormal
     vec3 refractedDirection = iceRefract(e, nRefract, iceRefractionRatio);
     //ICEHOOK::RefractionDirection
-    vec3 refracted = texture(iceEnvironment, refractedDirection).rgb;
-    vec3 reflected = texture(iceEnvironment, iceReflect(e, nFront)).rgb;
-    gl_FragData[0].rgb = iceTint * mix(refracted, reflected, clamp(fresnel, 0.0, 1.0));
+    vec3 refracted = iceEnvironmentColor(refractedDirection);
+    vec3 reflected = iceEnvironmentColor(iceReflect(e, nFront));
+    vec3 iceColor = iceTint;
+    //ICEHOOK::ScalarColor
+    gl_FragData[0].rgb = iceColor * mix(refracted, reflected, clamp(fresnel, 0.0, 1.0));
     //ICEHOOK::Interior
     //ICEHOOK::Glistening
     //ICEHOOK::Debug

@@ -1,0 +1,80 @@
+/**
+ * @class   vtkIceRepresentation
+ * @brief   ParaView's "Ice" representation: a surface drawn by vtkIceMapper.
+ *
+ * A vtkGeometryRepresentationWithFaces whose mapper and LOD mapper are vtkIceMappers, so the
+ * surface stays ice during interaction. ParaView delivers the surface as composite data (a
+ * multiblock even for one dataset); the ice mapper draws polydata, so the blocks are merged into
+ * one surface before each mapper (one ice object per representation). Colouring by an array
+ * works as for "Surface": the mapper tints the ice with the mapped colours (vtkIceMapper,
+ * ScalarVisibility); "Solid Color" gives the ice colour (IceColor).
+ *
+ * The ice properties forward to both mappers. Two-sided refraction, cracks and air need
+ * vtkIcePass, which the "Ice View" (vtkPVIceRenderView) installs; in an ordinary render view
+ * the ice is one-sided and has no interior.
+ */
+#ifndef vtkIceRepresentation_h
+#define vtkIceRepresentation_h
+
+#include "IceViewsModule.h" // for export macro
+#include "vtkGeometryRepresentationWithFaces.h"
+#include "vtkNew.h" // for members
+
+class vtkCompositeDataGeometryFilter;
+class vtkIceMapper;
+
+class ICEVIEWS_EXPORT vtkIceRepresentation : public vtkGeometryRepresentationWithFaces
+{
+public:
+  static vtkIceRepresentation* New();
+  vtkTypeMacro(vtkIceRepresentation, vtkGeometryRepresentationWithFaces);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Forwarded to both vtkIceMappers (see vtkIceMapper for meanings and ranges).
+   */
+  void SetRefractionRatio(double value);
+  void SetFresnelPower(double value);
+  void SetBackNormalWeight(double value);
+  void SetTwoSidedRefraction(int value);
+  void SetIceColor(double red, double green, double blue);
+  void SetNumberOfCracks(int value);
+  void SetCrackSeed(int value);
+  void SetCrackIntensity(double value);
+  void SetCrackClipping(int value);
+  void SetNumberOfAirPlanes(int value);
+  void SetAirSeed(int value);
+  void SetMilkiness(double value);
+  void SetBumpStrength(double value);
+  void SetBumpScale(double value);
+  void SetGlistening(int value);
+  void SetGlisteningIntensity(double value);
+  void SetSnowAmount(double value);
+  void SetInteriorMethod(int value);
+  ///@}
+
+  /**
+   * The ice mapper used when not interacting (for tests and scripts).
+   */
+  vtkIceMapper* GetIceMapper();
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+protected:
+  vtkIceRepresentation();
+  ~vtkIceRepresentation() override;
+
+private:
+  vtkIceRepresentation(const vtkIceRepresentation&) = delete;
+  void operator=(const vtkIceRepresentation&) = delete;
+
+  template <typename Setter>
+  void ForEachIceMapper(Setter setter);
+
+  vtkNew<vtkCompositeDataGeometryFilter> Merge;
+  vtkNew<vtkCompositeDataGeometryFilter> MergeLOD;
+};
+
+#endif

@@ -1,0 +1,110 @@
+"""Helpers of VTK Ice's ParaView tests: load the plugin, render views to arrays, compare."""
+import os
+import sys
+
+import numpy
+from paraview.simple import (CreateTexture, CreateView, GetActiveCamera, LoadPlugin, Render,
+                             SaveScreenshot, Show)
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+SIZE = [400, 300]
+failures = []
+
+
+def load_plugin():
+    """Loads the plugin named by VTKICE_PARAVIEW_PLUGIN (set by ctest) into this process."""
+    path = os.environ["VTKICE_PARAVIEW_PLUGIN"]
+    LoadPlugin(path, remote=False, ns=globals())
+
+
+def check(condition, message):
+    print(("ok   " if condition else "FAIL ") + message, flush=True)
+    if not condition:
+        failures.append(message)
+
+
+def finish():
+    if failures:
+        print("%d check(s) failed" % len(failures))
+        sys.exit(1)
+    print("all checks passed")
+
+
+def make_view(kind="IceView"):
+    view = CreateView(kind)
+    view.ViewSize = SIZE
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.2, 0.25, 0.35]
+    return view
+
+
+def look_at(view, position=(0.4, 0.6, 4.0)):
+    view.CameraPosition = list(position)
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 1, 0]
+
+
+def clean_ice(display):
+    """Ice with only its optics: no interior, no bumps (pixel tests compare surfaces)."""
+    display.NumberOfCracks = 0
+    display.NumberOfAirPlanes = 0
+    display.BumpStrength = 0
+
+
+def capture(view, path):
+    """Renders `view`, saves it to `path` and returns the image as an (h, w, 3) int array."""
+    Render(view)
+    SaveScreenshot(path, view, ImageResolution=SIZE)
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, -1)
+    return pixels[::-1, :, :3].astype(int)
+
+
+def difference(a, b):
+    """Per-pixel largest channel difference."""
+    return numpy.abs(a - b).max(axis=2)
+
+
+def grow(mask, pixels):
+    """`mask` dilated by `pixels` (8-neighbourhood): the silhouette plus its anti-aliased rim."""
+    grown = mask.copy()
+    for _ in range(pixels):
+        step = grown.copy()
+        step[1:, :] |= grown[:-1, :]
+        step[:-1, :] |= grown[1:, :]
+        step[:, 1:] |= grown[:, :-1]
+        step[:, :-1] |= grown[:, 1:]
+        grown = step
+    return grown
+
+
+def shrink(mask, pixels):
+    return ~grow(~mask, pixels)
+
+
+def write_environment(path):
+    """An equirectangular panorama with structure everywhere (hue by longitude, a checker)."""
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    width, height = 512, 256
+    u, v = numpy.meshgrid(numpy.arange(width) / width, numpy.arange(height) / height)
+    red = 127 + 120 * numpy.sin(2 * numpy.pi * 3 * u)
+    green = 255 * v
+    blue = numpy.where(((numpy.arange(width)[None, :] // 32 + numpy.arange(height)[:, None] // 32)
+                        % 2) == 1, 200, 60)
+    rgb = numpy.stack([red, green, blue], axis=-1).astype(numpy.uint8).reshape(-1, 3)
+    image = vtkImageData()
+    image.SetDimensions(width, height, 1)
+    image.GetPointData().SetScalars(numpy_to_vtk(rgb, deep=True))
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(image)
+    writer.Write()
+    return CreateTexture(path)

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The ParaView example three ways: its pvpython script, its state file loaded in pvpython, and
+# the script in pvbatch (one process). All three images must agree, and show ice.
+set -euo pipefail
+pvpython=$1 pvbatch=$2 examples=$3 out=$4
+"$pvpython" "$examples/ice_wavelet.py" "$out/example-pvpython.png"
+"$pvpython" "$(dirname "$0")/Python/render_state.py" "$examples/ice_wavelet.pvsm" \
+  "$out/example-state.png"
+"$pvbatch" "$examples/ice_wavelet.py" "$out/example-pvbatch.png"
+"$pvpython" "$(dirname "$0")/Python/compare_examples.py" "$out/example-pvpython.png" \
+  "$out/example-state.png" "$out/example-pvbatch.png"

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The ParaView application with the plugin: a sphere shown as Ice with its Ice property group;
+# a screenshot of the whole screen (the window) goes to $out/paraview-gui.png.
+set -euo pipefail
+paraview=$1 plugin_dir=$2 out=$3
+result="$out/gui-result.txt"
+rm -f "$result"
+VTKICE_GUI_RESULT="$result" PV_PLUGIN_PATH="$plugin_dir" \
+  "$paraview" -geometry 1280x1400+0+0 --dr --script="$(dirname "$0")/Python/gui_script.py" \
+  > "$out/gui.log" 2>&1 &
+pid=$!
+for _ in $(seq 120); do [ -s "$result" ] && break; sleep 1; done
+sleep 3 # the window finishes drawing
+xwd -root -silent > "$out/paraview-gui.xwd"
+kill "$pid"
+wait "$pid" 2>/dev/null || true
+cat "$result" 2>/dev/null || { echo "FAIL the GUI script did not run"; cat "$out/gui.log"; exit 1; }
+status=0
+grep -q "^representations: .*\bIce\b" "$result" || { echo "FAIL no Ice representation"; status=1; }
+grep -q "^representation: 'Ice'" "$result" || { echo "FAIL the display is not Ice"; status=1; }
+grep -q "^ice properties: True" "$result" || { echo "FAIL no Ice properties"; status=1; }
+if grep -q "ERR|" "$out/gui.log"; then echo "FAIL errors in the GUI's log:"; grep "ERR|" "$out/gui.log"; status=1; fi
+convert "$out/paraview-gui.xwd" -crop 1280x1400+0+0 "$out/paraview-gui.png"
+rm -f "$out/paraview-gui.xwd"
+exit "$status"
