@@ -10,7 +10,9 @@
 #include "vtkNew.h"
 #include "vtkOpenGLTexture.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
+#include "vtkSkybox.h"
 #include "vtkTexture.h"
 
 #include <algorithm>
@@ -43,6 +45,29 @@ bool HasFaceImages(vtkTexture* texture)
   return true;
 }
 
+// Whether a skybox shows `env` gamma-corrected: the renderer's visible vtkSkybox of that texture
+// decides (ParaView's corrects, VTK's default does not); without one, an sRGB texture does (its
+// values are stored gamma-encoded, and sampled as linear).
+bool ShowsGammaCorrected(vtkRenderer* renderer, vtkTexture* env)
+{
+  if (!env)
+  {
+    return false;
+  }
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    auto* skybox = vtkSkybox::SafeDownCast(prop);
+    if (skybox && skybox->GetVisibility() && skybox->GetTexture() == env)
+    {
+      return skybox->GetGammaCorrect();
+    }
+  }
+  return env->GetUseSRGBColorSpace();
+}
+
 // The colours of an sRGB image as linear floats (alpha dropped).
 vtkSmartPointer<vtkImageData> DecodeSRGB(vtkImageData* image)
 {
@@ -52,7 +77,10 @@ vtkSmartPointer<vtkImageData> DecodeSRGB(vtkImageData* image)
   vtkNew<vtkFloatArray> linear;
   linear->SetNumberOfComponents(3);
   linear->SetNumberOfTuples(count);
-  const double scale = stored->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  // Integer texels are normalized as OpenGL does.
+  const double scale = stored->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0
+    : stored->GetDataType() == VTK_UNSIGNED_SHORT                 ? 1.0 / 65535.0
+                                                                   : 1.0;
   for (vtkIdType i = 0; i < count; ++i)
   {
     for (int c = 0; c < 3; ++c)
@@ -77,7 +105,7 @@ vtkTexture* vtkIceStaticEnvironment::Select(vtkRenderer* renderer, vtkObject* ow
   const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   std::copy(identity, identity + 9, this->LookupMatrix);
   const bool srgb = env && env->GetUseSRGBColorSpace();
-  this->ColorSpace = srgb ? FromLinear : AsSampled;
+  this->ColorSpace = ShowsGammaCorrected(renderer, env) ? FromLinear : AsSampled;
   if (cubeMap && HasFaceImages(env))
   {
     if (vtkIceVTKCompat::CubeMapLookupFlipsZ)
@@ -114,7 +142,6 @@ vtkTexture* vtkIceStaticEnvironment::Select(vtkRenderer* renderer, vtkObject* ow
       this->PanoramaTime = pixels->GetMTime();
       this->Panorama->SetInputData(srgb ? DecodeSRGB(pixels).GetPointer() : pixels);
     }
-    this->ColorSpace = srgb ? FromLinear : AsSampled;
     return this->Converted;
   }
   if (owner && !this->Warned)

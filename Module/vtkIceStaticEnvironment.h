@@ -26,8 +26,8 @@ public:
   // The matrix (column-major, as GLSL reads it) the shader applies to a world direction before it samples the bound
   // texture, so that the ice lines up with VTK's skybox of the same texture.
   const float* GetLookupMatrix() const { return this->LookupMatrix; }
-  // How the shader shows the sampled colours as gamma-corrected vtkSkybox does: AsSampled, or
-  // FromLinear (an sRGB environment, sampled as linear values).
+  // How the shader shows the sampled colours as the skybox of the same texture does: AsSampled,
+  // or FromLinear (gamma-corrected, as ParaView's skybox and an sRGB texture without a skybox).
   enum ColorSpaces
   {
     AsSampled = 0,

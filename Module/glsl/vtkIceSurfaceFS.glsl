@@ -2,8 +2,8 @@
 in float iceFresnelFactorVSOutput;
 uniform samplerCube iceEnvironment;
 // World direction to the environment texture's lookup direction, and how to show its colours as
-// vtkSkybox (gamma-corrected, as ParaView uses it) shows them: 0 as sampled, 1 linear values of
-// an sRGB environment (vtkIceStaticEnvironment).
+// the skybox of the same texture shows them: 0 as sampled, 1 gamma-corrected
+// (vtkIceStaticEnvironment).
 uniform mat3 iceEnvironmentMatrix;
 uniform int iceEnvironmentColorSpace;
 vec3 iceEnvironmentColor(vec3 directionWC)

@@ -341,13 +341,11 @@ Stats MaskedDifference(const Image& a, const Image& b, const std::vector<bool>& 
   }
   return Summarize(differences);
 }
-}
 
-Invisibility MeasureInvisibility(vtkTexture* environment)
+Invisibility MeasureAgainst(vtkTexture* environment, vtkSkybox* skybox)
 {
   vtkNew<vtkRenderer> renderer;
   renderer->SetEnvironmentTexture(environment);
-  vtkNew<vtkSkybox> skybox;
   skybox->SetTexture(environment);
   renderer->AddActor(skybox);
 
@@ -387,6 +385,22 @@ Invisibility MeasureInvisibility(vtkTexture* environment)
   window->Render();
   result.Visible = MaskedDifference(result.Background, Capture(window), interior);
   return result;
+}
+}
+
+Invisibility MeasureInvisibility(vtkTexture* environment)
+{
+  vtkNew<vtkSkybox> skybox;
+  return MeasureAgainst(environment, skybox);
+}
+
+Invisibility MeasurePanoramaInvisibility(vtkTexture* panorama, bool gammaCorrect)
+{
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetProjection(vtkSkybox::Sphere);
+  skybox->SetGammaCorrect(gammaCorrect);
+  skybox->SetFloorRight(0.0, 0.0, 1.0);
+  return MeasureAgainst(panorama, skybox);
 }
 
 bool ReportInvisibility(const std::string& name, const Invisibility& result)

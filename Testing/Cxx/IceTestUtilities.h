@@ -102,6 +102,9 @@ struct Invisibility
   Stats Visible;
 };
 Invisibility MeasureInvisibility(vtkTexture* environment);
+// The same with a 2D equirectangular panorama as the environment, behind a vtkSkybox of sphere
+// projection oriented as ParaView orients it (FloorRight (0, 0, 1)), gamma-corrected or not.
+Invisibility MeasurePanoramaInvisibility(vtkTexture* panorama, bool gammaCorrect = false);
 
 // Prints the figures and checks the bounds: over 20 000 interior pixels, invisible ice within
 // mean 1/255 and p99 4/255 of the background, default ice at least 5/255 off on average.

@@ -5,7 +5,7 @@ import sys
 
 import numpy
 from paraview.simple import (ColorBy, Delete, Elevation, GetColorTransferFunction,
-                             GroupDatasets, Hide, Show, Sphere, Tessellate)
+                             GroupDatasets, Hide, Show, Sphere, Tessellate, Wavelet)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ice_paraview_helpers as h  # noqa: E402
@@ -58,6 +58,13 @@ for kind in ("IceView", "RenderView"):
             "%s: nothing changes outside the silhouette" % kind)
     if kind == "IceView":
         compare_baseline(ice, "ice-view-sphere.png")
+    Delete(view)
+
+# Ice is offered for image data and composite data too.
+for name, source in (("image data", Wavelet()), ("multiblock", GroupDatasets(Input=[sphere]))):
+    view = h.make_view()
+    available = Show(source, view).GetProperty("Representation").Available
+    h.check("Ice" in available, "Ice is offered for %s" % name)
     Delete(view)
 
 # 2. Composite input (two blocks, one an unstructured grid): both drawn as ice.
