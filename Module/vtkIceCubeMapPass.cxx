@@ -355,8 +355,8 @@ vtkTextureObject* vtkIceCubeMapPass::GetCubeMap(vtkProp* iceProp)
   {
     // A prop that draws through an inner actor sharing its property keys (ParaView's
     // vtkPVLODActor): the mapper is handed the inner actor.
-    found = std::find_if(this->Internals->Maps.begin(), this->Internals->Maps.end(),
-      [iceProp](const auto& entry) {
+    found = std::find_if(
+      this->Internals->Maps.begin(), this->Internals->Maps.end(), [iceProp](const auto& entry) {
         return entry.first->GetPropertyKeys() == iceProp->GetPropertyKeys();
       });
   }

@@ -241,8 +241,7 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   }
   // A dynamic cube map is handed to the shader by the pass that rendered it.
   vtkIcePass* pass = vtkIcePass::GetIcePassOf(act);
-  this->ActiveEnvironmentObject =
-    pass && pass->GetCubeMapOf(act)
+  this->ActiveEnvironmentObject = pass && pass->GetCubeMapOf(act)
     ? nullptr
     : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
   if (this->NormalMap && this->BumpStrength > 0.0)
@@ -344,7 +343,8 @@ void vtkIceMapper::SetIceShaderParameters(
   // A dynamic cube map holds the scene at the raw world direction.
   static const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   program->SetUniformMatrix3x3("iceEnvironmentMatrix",
-    const_cast<float*>(this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity));
+    const_cast<float*>(
+      this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity));
   program->SetUniformi("iceEnvironmentColorSpace",
     this->ActiveEnvironmentObject ? this->Environment->GetColorSpace() : 0);
   if (this->ActiveEnvironmentObject)

@@ -80,14 +80,13 @@ vtkSmartPointer<vtkImageData> DecodeSRGB(vtkImageData* image)
   // Integer texels are normalized as OpenGL does.
   const double scale = stored->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0
     : stored->GetDataType() == VTK_UNSIGNED_SHORT                 ? 1.0 / 65535.0
-                                                                   : 1.0;
+                                                                  : 1.0;
   for (vtkIdType i = 0; i < count; ++i)
   {
     for (int c = 0; c < 3; ++c)
     {
       const double v = scale * stored->GetComponent(i, std::min(c, components - 1));
-      linear->SetComponent(
-        i, c, v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+      linear->SetComponent(i, c, v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
     }
   }
   auto decoded = vtkSmartPointer<vtkImageData>::New();

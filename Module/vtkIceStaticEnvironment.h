@@ -23,8 +23,8 @@ public:
   vtkTextureObject* Bind(vtkRenderer* renderer, vtkObject* owner);
   // After the draw.
   void Unbind(vtkRenderer* renderer);
-  // The matrix (column-major, as GLSL reads it) the shader applies to a world direction before it samples the bound
-  // texture, so that the ice lines up with VTK's skybox of the same texture.
+  // The matrix (column-major, as GLSL reads it) the shader applies to a world direction before it
+  // samples the bound texture, so that the ice lines up with VTK's skybox of the same texture.
   const float* GetLookupMatrix() const { return this->LookupMatrix; }
   // How the shader shows the sampled colours as the skybox of the same texture does: AsSampled,
   // or FromLinear (gamma-corrected, as ParaView's skybox and an sRGB texture without a skybox).

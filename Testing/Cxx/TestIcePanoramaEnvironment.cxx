@@ -48,13 +48,12 @@ vtkSmartPointer<vtkTexture> MakePanorama()
 int TestIcePanoramaEnvironment(int, char*[])
 {
   vtkSmartPointer<vtkTexture> panorama = MakePanorama();
-  bool ok = IceTest::ReportInvisibility(
-    "panorama", IceTest::MeasurePanoramaInvisibility(panorama));
+  bool ok = IceTest::ReportInvisibility("panorama", IceTest::MeasurePanoramaInvisibility(panorama));
 
   vtkSmartPointer<vtkTexture> srgb = MakePanorama();
   srgb->UseSRGBColorSpaceOn();
-  ok = IceTest::ReportInvisibility(
-         "sRGB panorama, gamma-corrected skybox", IceTest::MeasurePanoramaInvisibility(srgb, true)) &&
+  ok = IceTest::ReportInvisibility("sRGB panorama, gamma-corrected skybox",
+         IceTest::MeasurePanoramaInvisibility(srgb, true)) &&
     ok;
   ok = IceTest::ReportInvisibility("sRGB panorama, skybox without gamma correction",
          IceTest::MeasurePanoramaInvisibility(srgb, false)) &&
