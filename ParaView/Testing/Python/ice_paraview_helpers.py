@@ -90,23 +90,46 @@ def shrink(mask, pixels):
     return ~grow(~mask, pixels)
 
 
-def write_environment(path):
-    """An equirectangular panorama with structure everywhere (hue by longitude, a checker)."""
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkIOImage import vtkPNGWriter
-    from vtkmodules.util.numpy_support import numpy_to_vtk
-    width, height = 512, 256
+def panorama_pixels(width=512, height=256):
+    """Float RGB in [0, 1], rows bottom first (VTK's order): red by longitude, green by latitude,
+    a checker of blue."""
     u, v = numpy.meshgrid(numpy.arange(width) / width, numpy.arange(height) / height)
     red = 127 + 120 * numpy.sin(2 * numpy.pi * 3 * u)
     green = 255 * v
     blue = numpy.where(((numpy.arange(width)[None, :] // 32 + numpy.arange(height)[:, None] // 32)
                         % 2) == 1, 200, 60)
-    rgb = numpy.stack([red, green, blue], axis=-1).astype(numpy.uint8).reshape(-1, 3)
+    return numpy.stack([red, green, blue], axis=-1) / 255.0
+
+
+def write_environment(path):
+    """An equirectangular PNG panorama with structure everywhere; returns its texture proxy."""
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    rgb = panorama_pixels()
+    height, width, _ = rgb.shape
     image = vtkImageData()
     image.SetDimensions(width, height, 1)
-    image.GetPointData().SetScalars(numpy_to_vtk(rgb, deep=True))
+    image.GetPointData().SetScalars(
+        numpy_to_vtk((255 * rgb).astype(numpy.uint8).reshape(-1, 3), deep=True))
     writer = vtkPNGWriter()
     writer.SetFileName(path)
     writer.SetInputData(image)
     writer.Write()
+    return CreateTexture(path)
+
+
+def write_hdr_environment(path, brightness=1.6):
+    """The same panorama as a Radiance .hdr file (flat RGBE scanlines, values up to
+    `brightness`); returns its texture proxy."""
+    rgb = panorama_pixels()[::-1] * brightness  # Radiance's "-Y": the top row first
+    height, width, _ = rgb.shape
+    peak = rgb.max(axis=-1)
+    exponent = numpy.where(peak > 1e-32, numpy.floor(numpy.log2(numpy.maximum(peak, 1e-32))) + 1, 0)
+    mantissa = numpy.where(peak[..., None] > 1e-32, rgb / numpy.exp2(exponent)[..., None] * 256, 0)
+    rgbe = numpy.concatenate([numpy.clip(mantissa, 0, 255), (exponent + 128)[..., None]], axis=-1)
+    rgbe[peak <= 1e-32] = 0
+    with open(path, "wb") as out:
+        out.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width))
+        out.write(rgbe.astype(numpy.uint8).tobytes())
     return CreateTexture(path)
