@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
-#   ./ice.sh test [ctest options]         install what is missing, build, run every test
+#   ./ice.sh test [ctest options]         every test, as CI runs them: the VTK 9.1 stage, then the
+#                                         ParaView stage, then Debian's VTK 9.1 installed again
+#   ./ice.sh test-vtk [ctest options]     the VTK 9.1 stage alone: build, run its tests
 #   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~15 min)
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
 #   ./ice.sh valgrind [frames]            build, then valgrind memcheck on one full-ice run
-#   ./ice.sh paraview [ctest options]     install ParaView 5.11 (replacing Debian's VTK 9.1 dev
-#                                         packages), build the ParaView plugin, run its tests
+#   ./ice.sh paraview [ctest options]     the ParaView stage alone: install ParaView 5.11 (in place
+#                                         of Debian's VTK 9.1 dev packages), build the plugin, run
+#                                         its tests; other commands swap the packages back
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
 # run again through EGL with no DISPLAY at all (Documentation/headless.md).
@@ -45,7 +48,17 @@ case "$command" in
     build
     "$build_dir/bin/ice-bench" "$@"
     ;;
-  test | sanitize)
+  test)
+    # Each stage runs whatever the other did; the machine ends as the VTK 9.1 stage needs it.
+    status=0
+    "./$(basename "$0")" test-vtk "$@" || status=1
+    echo "== ParaView stage (./ice.sh paraview)"
+    "./$(basename "$0")" paraview "$@" || status=1
+    echo "== Debian's VTK 9.1 again"
+    bash .ci/install-deps.sh
+    exit "$status"
+    ;;
+  test-vtk | sanitize)
     if [ "$command" = sanitize ]; then
       # AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer: a Debug build of
       # its own; the tests get the sanitizers' options from CMake (Documentation/reliability.md).
@@ -61,8 +74,7 @@ case "$command" in
     exit "$status"
     ;;
   paraview)
-    # ParaView's own VTK: a build of its own in build-paraview; the other commands reinstall
-    # Debian's VTK 9.1 when they run (.ci/install-deps.sh). Documentation/paraview.md.
+    # ParaView's own VTK: a build of its own in build-paraview (Documentation/paraview.md).
     bash .ci/install-deps.sh paraview
     pv_build_dir=${VTKICE_PARAVIEW_BUILD_DIR:-build-paraview}
     if [ ! -f "$pv_build_dir/build.ninja" ]; then
@@ -84,6 +96,7 @@ case "$command" in
     ;;
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
+      "| ./ice.sh test-vtk [ctest options]" \
       "| ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
       "| ./ice.sh paraview [ctest options]" >&2

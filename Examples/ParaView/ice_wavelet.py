@@ -3,8 +3,9 @@ beside ordinary representations, refracting a dynamic cube map of the scene.
 
     pvpython Examples/ParaView/ice_wavelet.py [image.png] [state.pvsm]
 
-The plugin is found through PV_PLUGIN_PATH (./ice.sh paraview sets it up; see
-Documentation/paraview.md) or loaded from VTKICE_PARAVIEW_PLUGIN.
+The plugin is found through PV_PLUGIN_PATH (for a build by ./ice.sh paraview:
+build-paraview/lib/paraview-5.11/plugins/IcePlugin) or loaded from VTKICE_PARAVIEW_PLUGIN, its
+path (Documentation/paraview.md).
 """
 import os
 import sys

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The long soak: TestIceSoak for 10 000 frames (or $1), reporting every figure even after a
-# failure. Needs a build (./ice.sh test builds one). Runs on the display, or under Xvfb when there
+# failure. Needs a build (./ice.sh test-vtk builds one). Runs on the display, or under Xvfb when there
 # is none; VTKICE_BACKEND=egl (or osmesa) renders without X instead.
 #   Testing/Scripts/soak.sh [FRAMES] [SEED]         (./ice.sh soak [FRAMES] [SEED])
 # About 15 minutes for 10 000 frames on 2 cores with llvmpipe. Exit status 0 when no OpenGL error,
@@ -12,7 +12,7 @@ frames=${1:-10000}
 seed=${2:-12345}
 driver="$build_dir/bin/IceCxxTests"
 if [ ! -x "$driver" ]; then
-  echo "soak: $driver not found: build first (./ice.sh test, or cmake --build $build_dir)" >&2
+  echo "soak: $driver not found: build first (./ice.sh test-vtk, or cmake --build $build_dir)" >&2
   exit 2
 fi
 # The memory figures are read with llvmpipe's rasterizer threads off (see TestIceSoak.cxx).

@@ -22,7 +22,7 @@ build_dir=${VTKICE_BUILD_DIR:-build}
 frames=${1:-100}
 driver="$build_dir/bin/IceCxxTests"
 if [ ! -x "$driver" ]; then
-  echo "valgrind: $driver not found: build first (./ice.sh test, or cmake --build $build_dir)" >&2
+  echo "valgrind: $driver not found: build first (./ice.sh test-vtk, or cmake --build $build_dir)" >&2
   exit 2
 fi
 command -v valgrind >/dev/null || { echo "valgrind: not installed (apt-get install valgrind)" >&2; exit 2; }
