@@ -69,94 +69,35 @@ int vtkIceRepresentation::ProcessViewRequest(
 }
 
 //------------------------------------------------------------------------------
-void vtkIceRepresentation::SetRefractionRatio(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetRefractionRatio(value); });
-}
+// Each ice property goes to both mappers; `value` converted as the mapper's setter takes it.
+#define vtkIceForwardMacro(name, type, value)                                                      \
+  void vtkIceRepresentation::Set##name(type v)                                                     \
+  {                                                                                                \
+    this->ForEachIceMapper([v](vtkIceMapper* m) { m->Set##name(value); });                         \
+  }
 
-void vtkIceRepresentation::SetFresnelPower(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetFresnelPower(value); });
-}
-
-void vtkIceRepresentation::SetBackNormalWeight(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetBackNormalWeight(value); });
-}
-
-void vtkIceRepresentation::SetTwoSidedRefraction(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetTwoSidedRefraction(value != 0); });
-}
+vtkIceForwardMacro(RefractionRatio, double, v);
+vtkIceForwardMacro(FresnelPower, double, v);
+vtkIceForwardMacro(BackNormalWeight, double, v);
+vtkIceForwardMacro(TwoSidedRefraction, int, v != 0);
+vtkIceForwardMacro(NumberOfCracks, int, v);
+vtkIceForwardMacro(CrackSeed, int, v);
+vtkIceForwardMacro(CrackIntensity, double, v);
+vtkIceForwardMacro(CrackClipping, int, v);
+vtkIceForwardMacro(NumberOfAirPlanes, int, v);
+vtkIceForwardMacro(AirSeed, int, v);
+vtkIceForwardMacro(Milkiness, double, v);
+vtkIceForwardMacro(BumpStrength, double, v);
+vtkIceForwardMacro(BumpScale, double, v);
+vtkIceForwardMacro(Glistening, int, v != 0);
+vtkIceForwardMacro(GlisteningIntensity, double, v);
+vtkIceForwardMacro(SnowAmount, double, v);
+vtkIceForwardMacro(InteriorMethod, int, v);
+#undef vtkIceForwardMacro
 
 void vtkIceRepresentation::SetIceColor(double red, double green, double blue)
 {
   this->ForEachIceMapper([=](vtkIceMapper* m) { m->SetIceColor(red, green, blue); });
-}
-
-void vtkIceRepresentation::SetNumberOfCracks(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetNumberOfCracks(value); });
-}
-
-void vtkIceRepresentation::SetCrackSeed(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetCrackSeed(value); });
-}
-
-void vtkIceRepresentation::SetCrackIntensity(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetCrackIntensity(value); });
-}
-
-void vtkIceRepresentation::SetCrackClipping(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetCrackClipping(value); });
-}
-
-void vtkIceRepresentation::SetNumberOfAirPlanes(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetNumberOfAirPlanes(value); });
-}
-
-void vtkIceRepresentation::SetAirSeed(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetAirSeed(value); });
-}
-
-void vtkIceRepresentation::SetMilkiness(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetMilkiness(value); });
-}
-
-void vtkIceRepresentation::SetBumpStrength(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetBumpStrength(value); });
-}
-
-void vtkIceRepresentation::SetBumpScale(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetBumpScale(value); });
-}
-
-void vtkIceRepresentation::SetGlistening(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetGlistening(value != 0); });
-}
-
-void vtkIceRepresentation::SetGlisteningIntensity(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetGlisteningIntensity(value); });
-}
-
-void vtkIceRepresentation::SetSnowAmount(double value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetSnowAmount(value); });
-}
-
-void vtkIceRepresentation::SetInteriorMethod(int value)
-{
-  this->ForEachIceMapper([value](vtkIceMapper* m) { m->SetInteriorMethod(value); });
 }
 
 //------------------------------------------------------------------------------

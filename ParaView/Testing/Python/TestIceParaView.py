@@ -43,13 +43,7 @@ for kind in ("IceView", "RenderView"):
     h.look_at(view)
     h.check("Ice" in display.GetProperty("Representation").Available,
             "%s: Ice is in the representation list" % kind)
-    surface = h.capture(view, os.path.join(out, "surface-%s.png" % kind))
-    display.Representation = "Ice"
-    ice = h.capture(view, os.path.join(out, "ice-%s.png" % kind))
-    Hide(sphere, view)
-    empty = h.capture(view, os.path.join(out, "empty-%s.png" % kind))
-    inside = h.difference(surface, empty) > 0
-    d = h.difference(ice, surface)
+    ice, inside, d = h.surface_then_ice(view, sphere, display, os.path.join(out, "sphere-" + kind))
     h.check(inside.sum() > 10000, "%s: the sphere covers %d pixels" % (kind, inside.sum()))
     h.check((d[inside] > 8).mean() > 0.9,
             "%s: ice differs from Surface on %.1f %% of the silhouette" %
@@ -78,13 +72,8 @@ for kind in ("IceView", "RenderView"):
     h.look_at(view, (0.0, 0.5, 7.0))
     display.Representation = "Surface"
     display.ColorArrayName = ["POINTS", ""]
-    surface = h.capture(view, os.path.join(out, "multiblock-surface-%s.png" % kind))
-    display.Representation = "Ice"
-    ice = h.capture(view, os.path.join(out, "multiblock-ice-%s.png" % kind))
-    Hide(group, view)
-    empty = h.capture(view, os.path.join(out, "multiblock-empty-%s.png" % kind))
-    inside = h.difference(surface, empty) > 0
-    d = h.difference(ice, surface)
+    ice, inside, d = h.surface_then_ice(view, group, display,
+                                        os.path.join(out, "multiblock-" + kind))
     half = ice.shape[1] // 2
     for name, part in (("left block", d[:, :half]), ("right block", d[:, half:])):
         h.check((part > 8).sum() > 3000, "%s multiblock: the %s is ice (%d pixels differ)" %
@@ -131,14 +120,8 @@ view = h.make_view()
 display = Show(sphere, view)
 h.look_at(view)
 view.CameraParallelProjection = 1
-surface = h.capture(view, os.path.join(out, "parallel-surface.png"))
-display.Representation = "Ice"
-h.clean_ice(display)
-ice = h.capture(view, os.path.join(out, "parallel-ice.png"))
-Hide(sphere, view)
-empty = h.capture(view, os.path.join(out, "parallel-empty.png"))
-inside = h.difference(surface, empty) > 0
-d = h.difference(ice, surface)
+ice, inside, d = h.surface_then_ice(view, sphere, display, os.path.join(out, "parallel"),
+                                    h.clean_ice)
 h.check((d[inside] > 8).mean() > 0.9, "parallel: ice differs from Surface inside")
 h.check(d[~h.grow(inside, 1)].max() == 0, "parallel: nothing changes outside")
 Delete(view)

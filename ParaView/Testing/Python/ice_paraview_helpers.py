@@ -3,8 +3,7 @@ import os
 import sys
 
 import numpy
-from paraview.simple import (CreateTexture, CreateView, GetActiveCamera, LoadPlugin, Render,
-                             SaveScreenshot, Show)
+from paraview.simple import CreateTexture, CreateView, Hide, LoadPlugin, Render, SaveScreenshot
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -71,6 +70,20 @@ def capture(view, path):
 def difference(a, b):
     """Per-pixel largest channel difference."""
     return numpy.abs(a - b).max(axis=2)
+
+
+def surface_then_ice(view, source, display, prefix, setup=None):
+    """Captures `display` as Surface, then as Ice (after `setup(display)`), then hidden; saves
+    them as prefix-surface/-ice/-empty.png. Returns the ice image, the silhouette (where the
+    surface differs from the empty view) and the per-pixel difference of ice from surface."""
+    surface = capture(view, prefix + "-surface.png")
+    display.Representation = "Ice"
+    if setup:
+        setup(display)
+    ice = capture(view, prefix + "-ice.png")
+    Hide(source, view)
+    empty = capture(view, prefix + "-empty.png")
+    return ice, difference(surface, empty) > 0, difference(ice, surface)
 
 
 def grow(mask, pixels):
