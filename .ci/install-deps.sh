@@ -36,5 +36,7 @@ echo "Installing missing packages: ${missing[*]}"
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 export DEBIAN_FRONTEND=noninteractive
+# A run interrupted during an install (Ctrl-C) leaves dpkg half-configured; finish that first.
+$SUDO dpkg --configure -a
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq $recommends "${missing[@]}"

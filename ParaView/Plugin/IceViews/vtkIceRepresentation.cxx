@@ -2,9 +2,11 @@
 
 #include "vtkCompositeDataGeometryFilter.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataSet.h"
 #include "vtkIceMapper.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVLODActor.h"
 #include "vtkPVView.h"
 #include "vtkPolyData.h"
 
@@ -64,6 +66,11 @@ int vtkIceRepresentation::ProcessViewRequest(
     };
     merge(this->Mapper, this->Merge);
     merge(this->LODMapper, this->MergeLOD);
+    // Empty data is common in ParaView (an iso-value out of range, an empty block or piece); the
+    // ice mapper reports it as an error, ParaView's surface draws nothing: so does this.
+    auto* surface = vtkDataSet::SafeDownCast(this->Mapper->GetInputDataObject(0, 0));
+    const bool empty = !surface || surface->GetNumberOfPoints() == 0;
+    this->Actor->SetVisibility(this->GetVisibility() && !empty);
   }
   return 1;
 }

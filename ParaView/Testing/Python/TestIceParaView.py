@@ -4,7 +4,7 @@ import os
 import sys
 
 import numpy
-from paraview.simple import (ColorBy, Delete, Elevation, GetColorTransferFunction,
+from paraview.simple import (ColorBy, Contour, Delete, Elevation, GetColorTransferFunction,
                              GroupDatasets, Hide, Show, Sphere, Tessellate, Wavelet)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -60,6 +60,17 @@ for name, source in (("image data", Wavelet()), ("multiblock", GroupDatasets(Inp
     available = Show(source, view).GetProperty("Representation").Available
     h.check("Ice" in available, "Ice is offered for %s" % name)
     Delete(view)
+
+# Empty data (an iso-value out of range) draws nothing and reports nothing (the test fails on
+# any ParaView error), as Surface does.
+view = h.make_view()
+nothing = Show(Contour(Input=Wavelet(), ContourBy=["POINTS", "RTData"], Isosurfaces=[1.0e9]),
+               view)
+nothing.Representation = "Ice"
+h.check(h.difference(h.capture(view, os.path.join(out, "empty-ice.png")),
+                     h.capture(h.make_view(), os.path.join(out, "empty-view.png"))).max() == 0,
+        "empty data as Ice draws nothing")
+Delete(view)
 
 # 2. Composite input (two blocks, one an unstructured grid): both drawn as ice, in both views,
 # and nothing changes outside them.
