@@ -10,11 +10,11 @@
 set -euo pipefail
 recommends=--no-install-recommends
 if [ "${1:-}" = paraview ]; then
-  # The GUI test's screenshot uses xwd (x11-apps) and ImageMagick. ParaView's recommended
+  # The GUI test's screenshot uses xwd (x11-apps) and ImageMagick; the MPI test mpiexec. ParaView's recommended
   # packages (Qt's platform and image plugins among them) are what the GUI was tested with.
   packages=(
     paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config
-    libglm-dev libopenimageio-dev xvfb xauth libgl1-mesa-dri x11-apps imagemagick
+    libglm-dev libopenimageio-dev xvfb xauth libgl1-mesa-dri x11-apps imagemagick openmpi-bin
   )
   recommends=
 else

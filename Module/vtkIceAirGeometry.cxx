@@ -13,6 +13,7 @@
 #include "vtkPolyData.h"
 #include "vtkTransform.h"
 
+#include <algorithm>
 #include <cstdint>
 
 vtkStandardNewMacro(vtkIceAirGeometry);
@@ -47,6 +48,10 @@ int vtkIceAirGeometry::RequestData(
   }
   double bounds[6];
   ice->GetBounds(bounds);
+  if (vtkMath::AreBoundsInitialized(this->PlacementBounds))
+  {
+    std::copy(this->PlacementBounds, this->PlacementBounds + 6, bounds);
+  }
   vtkNew<vtkPoints> points;
   vtkNew<vtkFloatArray> uv;
   uv->SetName("vtkIceAirUV");

@@ -25,6 +25,9 @@ public:
   vtkGetMacro(NumberOfPlanes, int);
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
+  // The bounds the placement is scaled to; uninitialized (the default): the input's bounds.
+  vtkSetVector6Macro(PlacementBounds, double);
+  vtkGetVector6Macro(PlacementBounds, double);
 
   // Plane `index` of `seed` in ice of `bounds`: the placement of the square [-1, 1]^2 (z = 0)
   // and the lower left corner of its atlas tile; a point (x, y) of the square shows the atlas at
@@ -42,6 +45,7 @@ protected:
 
   int NumberOfPlanes = 0;
   int Seed = 1;
+  double PlacementBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
 
 private:
   vtkIceAirGeometry(const vtkIceAirGeometry&) = delete;

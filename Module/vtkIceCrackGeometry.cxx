@@ -9,6 +9,7 @@
 #include "vtkImplicitPolyDataDistance.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -16,6 +17,7 @@
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -86,6 +88,10 @@ int vtkIceCrackGeometry::RequestData(
   }
   double bounds[6];
   ice->GetBounds(bounds);
+  if (vtkMath::AreBoundsInitialized(this->PlacementBounds))
+  {
+    std::copy(this->PlacementBounds, this->PlacementBounds + 6, bounds);
+  }
 
   vtkSmartPointer<vtkPolyData> models[GenericCrackModels];
   for (int m = 0; m < GenericCrackModels; ++m)

@@ -27,6 +27,9 @@ public:
   vtkGetMacro(Seed, int);
   vtkSetMacro(ClipToSurface, bool);
   vtkGetMacro(ClipToSurface, bool);
+  // The bounds the placement is scaled to; uninitialized (the default): the input's bounds.
+  vtkSetVector6Macro(PlacementBounds, double);
+  vtkGetVector6Macro(PlacementBounds, double);
 
   // Crack `index` of `seed` in ice of `bounds`: its model's seed (vtkIceCrackSource) and the
   // placement of that model.
@@ -41,6 +44,7 @@ protected:
 
   int NumberOfCracks = 0;
   int Seed = 1;
+  double PlacementBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   bool ClipToSurface = false;
 
 private:

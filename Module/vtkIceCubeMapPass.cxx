@@ -1,5 +1,6 @@
 #include "vtkIceCubeMapPass.h"
 
+#include "vtkIceCubeMapCompositor.h"
 #include "vtkIceMapper.h"
 
 #include "vtkAlgorithm.h"
@@ -35,6 +36,7 @@
 
 vtkStandardNewMacro(vtkIceCubeMapPass);
 vtkCxxSetObjectMacro(vtkIceCubeMapPass, DelegatePass, vtkRenderPass);
+vtkCxxSetObjectMacro(vtkIceCubeMapPass, Compositor, vtkIceCubeMapCompositor);
 
 namespace
 {
@@ -180,8 +182,10 @@ public:
 private:
   void Allocate(
     vtkIceCubeMapPass* pass, vtkOpenGLRenderWindow* window, CubeMap& map, bool highDynamicRange);
-  void SetupCamera(
-    int face, const double center[3], const std::vector<vtkProp*>& scene, vtkCamera* mainCamera);
+  void SetupCamera(vtkIceCubeMapPass* pass, int face, const double center[3],
+    const std::vector<vtkProp*>& scene, vtkCamera* mainCamera);
+  // Replaces the face just rendered into the bound frame buffer by its composite over processes.
+  void CompositeFace(vtkIceCubeMapPass* pass, CubeMap& map, int face);
 };
 
 //------------------------------------------------------------------------------
@@ -224,8 +228,8 @@ void vtkIceCubeMapPass::vtkInternals::Allocate(
 }
 
 //------------------------------------------------------------------------------
-void vtkIceCubeMapPass::vtkInternals::SetupCamera(
-  int face, const double center[3], const std::vector<vtkProp*>& scene, vtkCamera* mainCamera)
+void vtkIceCubeMapPass::vtkInternals::SetupCamera(vtkIceCubeMapPass* pass, int face,
+  const double center[3], const std::vector<vtkProp*>& scene, vtkCamera* mainCamera)
 {
   // Near and far from the distance to the scene's farthest corner.
   double farthest = 1.0;
@@ -241,6 +245,11 @@ void vtkIceCubeMapPass::vtkInternals::SetupCamera(
       const double p[3] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] };
       farthest = std::max(farthest, std::sqrt(vtkMath::Distance2BetweenPoints(p, center)));
     }
+  }
+  if (pass->Compositor)
+  {
+    // One depth range on every process: the faces' depths are compared when composited.
+    pass->Compositor->MaximumOverProcesses(&farthest, 1);
   }
   vtkCamera* camera = this->FaceCamera;
   const FaceView& view = Faces[face];
@@ -297,9 +306,20 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   pass->NumberOfCulledProps += static_cast<vtkIdType>(scene.size() - visible.size());
 
   vtkSmartPointer<vtkCamera> mainCamera = renderer->GetActiveCamera();
-  this->SetupCamera(face, center, scene, mainCamera);
+  this->SetupCamera(pass, face, center, scene, mainCamera);
   renderer->SetActiveCamera(this->FaceCamera);
   renderer->SetUserLightTransform(this->LightTransform);
+  double background[3];
+  double background2[3];
+  renderer->GetBackground(background);
+  renderer->GetBackground2(background2);
+  const bool gradient = renderer->GetGradientBackground();
+  if (pass->Compositor && pass->Compositor->GetUseBackground())
+  {
+    renderer->SetBackground(pass->Compositor->GetBackground());
+    renderer->SetBackground2(pass->Compositor->GetBackground2());
+    renderer->SetGradientBackground(pass->Compositor->GetGradientBackground());
+  }
 
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
@@ -316,13 +336,48 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   faceState.SetFrameBuffer(this->FrameBuffer);
   pass->DelegatePass->Render(&faceState);
   pass->NumberOfRenderedProps += pass->DelegatePass->GetNumberOfRenderedProps();
+  if (pass->Compositor)
+  {
+    this->CompositeFace(pass, map, face);
+  }
 
   this->FrameBuffer->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
+  renderer->SetBackground(background);
+  renderer->SetBackground2(background2);
+  renderer->SetGradientBackground(gradient);
   renderer->SetUserLightTransform(nullptr);
   renderer->SetActiveCamera(mainCamera);
   ++pass->NumberOfFaceRenders;
   map.Rendered = map.Rendered || map.PendingFaces == 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCubeMapPass::vtkInternals::CompositeFace(vtkIceCubeMapPass* pass, CubeMap& map, int face)
+{
+  const int size = pass->FaceSize;
+  const vtkIdType pixels = static_cast<vtkIdType>(size) * size;
+  std::vector<float> rgba(4 * pixels);
+  std::vector<float> depth(pixels);
+  // A compositing pass may leave pixel buffers bound (IceT): read into and draw from memory.
+  GLint packBuffer = 0;
+  GLint unpackBuffer = 0;
+  glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &packBuffer);
+  glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  this->FrameBuffer->ActivateReadBuffer(0);
+  glReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, rgba.data());
+  glReadPixels(0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  pass->Compositor->CompositeFace(pixels, rgba.data(), depth.data());
+  map.Texture->Activate();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(
+    GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, 0, 0, size, size, GL_RGBA, GL_FLOAT, rgba.data());
+  map.Texture->Deactivate();
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(packBuffer));
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
+  vtkOpenGLCheckErrorMacro("failed after compositing a cube-map face");
 }
 
 //------------------------------------------------------------------------------
@@ -338,6 +393,7 @@ vtkIceCubeMapPass::vtkIceCubeMapPass()
 vtkIceCubeMapPass::~vtkIceCubeMapPass()
 {
   this->SetDelegatePass(nullptr);
+  this->SetCompositor(nullptr);
   delete this->Internals;
 }
 
@@ -396,9 +452,16 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
   const int texelType = highDynamicRange ? VTK_FLOAT : VTK_UNSIGNED_CHAR;
   const bool updateRequested = this->Internals->UpdateRequested;
   this->Internals->UpdateRequested = false;
+  struct Update
+  {
+    vtkInternals::CubeMap* Map;
+    double Center[3];
+    double Restart; // 0 or 1: a double, to agree with other processes on it
+  };
+  std::vector<Update> updates;
   for (vtkProp* iceProp : iceProps)
   {
-    double center[3];
+    Update update;
     const double* bounds = iceProp->GetBounds();
     if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
     {
@@ -406,27 +469,49 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
     }
     for (int i = 0; i < 3; ++i)
     {
-      center[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+      update.Center[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
     }
-    const size_t signature = SceneSignature(renderer, scene, center, this->FaceSize);
+    const size_t signature = SceneSignature(renderer, scene, update.Center, this->FaceSize);
     auto inserted = this->Internals->Maps.emplace(iceProp, vtkInternals::CubeMap());
-    vtkInternals::CubeMap& map = inserted.first->second;
+    update.Map = &inserted.first->second;
     // A new size or texel type reallocates the texture: all six faces are rendered again.
-    const bool reallocated = map.Texture &&
-      (map.Texture->GetWidth() != static_cast<unsigned int>(this->FaceSize) ||
-        map.Texture->GetVTKDataType() != texelType);
+    const vtkSmartPointer<vtkTextureObject>& texture = update.Map->Texture;
+    const bool reallocated = texture &&
+      (texture->GetWidth() != static_cast<unsigned int>(this->FaceSize) ||
+        texture->GetVTKDataType() != texelType);
     const bool restart = inserted.second || reallocated || updateRequested ||
-      (this->UpdateMode == EveryFrame && map.PendingFaces == 0) ||
-      (this->UpdateMode == OnChange && signature != map.Signature);
-    if (restart)
+      (this->UpdateMode == EveryFrame && update.Map->PendingFaces == 0) ||
+      (this->UpdateMode == OnChange && signature != update.Map->Signature);
+    update.Map->Signature = signature;
+    update.Restart = restart ? 1.0 : 0.0;
+    updates.push_back(update);
+  }
+  if (this->Compositor)
+  {
+    // What one process's part of the scene changes is in every process's cube maps: all update
+    // together (each face is a collective operation).
+    std::vector<double> restarts;
+    for (const Update& update : updates)
     {
-      map.PendingFaces = 6;
-      map.Signature = signature;
+      restarts.push_back(update.Restart);
     }
-    const int faces = std::min(map.PendingFaces, this->FacesPerFrame);
+    this->Compositor->MaximumOverProcesses(restarts.data(), static_cast<int>(restarts.size()));
+    for (size_t i = 0; i < updates.size(); ++i)
+    {
+      updates[i].Restart = restarts[i];
+    }
+  }
+  for (Update& update : updates)
+  {
+    if (update.Restart > 0.0)
+    {
+      update.Map->PendingFaces = 6;
+    }
+    const int faces = std::min(update.Map->PendingFaces, this->FacesPerFrame);
     for (int f = 0; f < faces; ++f)
     {
-      this->Internals->RenderFace(this, renderer, map, scene, center, highDynamicRange);
+      this->Internals->RenderFace(
+        this, renderer, *update.Map, scene, update.Center, highDynamicRange);
     }
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
@@ -467,4 +552,5 @@ void vtkIceCubeMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfFaceRenders: " << this->NumberOfFaceRenders << "\n";
   os << indent << "NumberOfCulledProps: " << this->NumberOfCulledProps << "\n";
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "Compositor: " << this->Compositor << "\n";
 }

@@ -24,6 +24,7 @@
 #include "RenderingIceModule.h" // for export macro
 #include "vtkOpenGLRenderPass.h"
 
+class vtkIceCubeMapCompositor;
 class vtkInformationObjectBaseKey;
 class vtkProp;
 class vtkTextureObject;
@@ -94,6 +95,16 @@ public:
 
   ///@{
   /**
+   * Distributed rendering: composites each face across processes (vtkIceCubeMapCompositor), so
+   * the cube maps show the parts of the scene other processes hold. Default null: this
+   * process's scene only.
+   */
+  virtual void SetCompositor(vtkIceCubeMapCompositor* compositor);
+  vtkGetObjectMacro(Compositor, vtkIceCubeMapCompositor);
+  ///@}
+
+  ///@{
+  /**
    * Counters since creation: faces rendered, and props culled from faces by FrustumCulling.
    */
   vtkGetMacro(NumberOfFaceRenders, vtkIdType);
@@ -121,6 +132,7 @@ protected:
   int FacesPerFrame = 6;
   bool FrustumCulling = true;
   vtkRenderPass* DelegatePass = nullptr;
+  vtkIceCubeMapCompositor* Compositor = nullptr;
   vtkIdType NumberOfFaceRenders = 0;
   vtkIdType NumberOfCulledProps = 0;
 

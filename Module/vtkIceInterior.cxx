@@ -115,9 +115,11 @@ vtkIceInterior::~vtkIceInterior() = default;
 
 //------------------------------------------------------------------------------
 vtkPolyData* vtkIceInterior::UpdateCracks(
-  vtkPolyData* ice, int number, int seed, bool clipToSurface)
+  vtkPolyData* ice, const double bounds[6], int number, int seed, bool clipToSurface)
 {
   this->Cracks->SetInputData(ice);
+  this->Cracks->SetPlacementBounds(
+    bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5]);
   this->Cracks->SetNumberOfCracks(number);
   this->Cracks->SetSeed(seed);
   this->Cracks->SetClipToSurface(clipToSurface);
@@ -151,7 +153,7 @@ void vtkIceInterior::DrawCracks(
 
 //------------------------------------------------------------------------------
 void vtkIceInterior::DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* iceInput,
-  int number, int seed, double milkiness, bool debug)
+  const double bounds[6], int number, int seed, double milkiness, bool debug)
 {
   // Back to front for this camera: the eye in the ice's model coordinates.
   double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
@@ -160,6 +162,7 @@ void vtkIceInterior::DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* 
   vtkMatrix4x4::Invert(ice->GetMatrix(), worldToModel);
   worldToModel->MultiplyPoint(eye, eye);
   this->Air->SetInputData(iceInput);
+  this->Air->SetPlacementBounds(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5]);
   this->Air->SetNumberOfPlanes(number);
   this->Air->SetSeed(seed);
   this->AirOrder->SetEye(eye);

@@ -24,8 +24,9 @@ public:
   vtkIceInterior();
   ~vtkIceInterior();
 
-  // The crack sheets of `ice` (rebuilt only when it or a parameter changed).
-  vtkPolyData* UpdateCracks(vtkPolyData* ice, int number, int seed, bool clipToSurface);
+  // The crack sheets of `ice`, placed in `bounds` (rebuilt only when it or a parameter changed).
+  vtkPolyData* UpdateCracks(
+    vtkPolyData* ice, const double bounds[6], int number, int seed, bool clipToSurface);
 
   // How the cracks are drawn.
   struct CrackLook
@@ -41,9 +42,10 @@ public:
   // rendered scene (`overlay`), or with the current state (into the back-face normals).
   void DrawCracks(vtkRenderer* renderer, vtkActor* ice, const CrackLook& look, bool overlay);
 
-  // Draws the air planes of `ice` over the rendered scene, back to front for the active camera.
-  void DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* iceInput, int number, int seed,
-    double milkiness, bool debug);
+  // Draws the air planes of `ice`, placed in `bounds`, over the rendered scene, back to front for
+  // the active camera.
+  void DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* iceInput, const double bounds[6],
+    int number, int seed, double milkiness, bool debug);
 
   // The bubble images of air of `seed`, for the single-pass interior.
   vtkTexture* GetAirAtlas(int seed);

@@ -16,6 +16,7 @@
 #include "vtkIceValueNoise.h"
 
 #include "vtkActor.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
@@ -95,10 +96,39 @@ vtkTexture* vtkIceMapper::GetNormalMap()
 }
 
 //------------------------------------------------------------------------------
+void vtkIceMapper::GetLookBounds(double bounds[6])
+{
+  if (vtkMath::AreBoundsInitialized(this->PlacementBounds))
+  {
+    std::copy(this->PlacementBounds, this->PlacementBounds + 6, bounds);
+    return;
+  }
+  this->PreparedInput->GetBounds(bounds);
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::EmptyInputIsPiece()
+{
+  return vtkMath::AreBoundsInitialized(this->PlacementBounds);
+}
+
+//------------------------------------------------------------------------------
+double* vtkIceMapper::GetBounds()
+{
+  double* own = this->Superclass::GetBounds();
+  if (!this->EmptyInputIsPiece())
+  {
+    return own;
+  }
+  std::copy(this->PlacementBounds, this->PlacementBounds + 6, this->Bounds);
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
 double vtkIceMapper::InputExtent()
 {
   double bounds[6];
-  this->PreparedInput->GetBounds(bounds);
+  this->GetLookBounds(bounds);
   return std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-12 });
 }
 
@@ -405,6 +435,7 @@ void vtkIceMapper::SetIceShaderParameters(
       settings.CrackSeed = this->CrackSeed;
       settings.CrackIntensity = this->CrackIntensity;
       settings.CrackBumpFrequency = 8.0 / this->InputExtent();
+      this->GetLookBounds(settings.Bounds);
       settings.AirPlanes = this->NumberOfAirPlanes;
       settings.AirSeed = this->AirSeed;
       settings.Milkiness = this->Milkiness;
@@ -445,7 +476,9 @@ vtkPolyData* vtkIceMapper::GetCrackGeometry()
   }
   // Ice without volume has no inside to hold cracks.
   const int cracks = this->InputFlat ? 0 : this->NumberOfCracks;
-  return this->Interior->UpdateCracks(this->PreparedInput, cracks, this->CrackSeed,
+  double bounds[6];
+  this->GetLookBounds(bounds);
+  return this->Interior->UpdateCracks(this->PreparedInput, bounds, cracks, this->CrackSeed,
     cracks > 0 && this->UsableCrackClipping() == Geometry);
 }
 
@@ -536,8 +569,10 @@ void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
     return;
   }
   this->HelpersSawPass = true;
-  this->Interior->DrawAir(ren, actor, this->PreparedInput, this->NumberOfAirPlanes, this->AirSeed,
-    this->Milkiness, debugAir);
+  double bounds[6];
+  this->GetLookBounds(bounds);
+  this->Interior->DrawAir(ren, actor, this->PreparedInput, bounds, this->NumberOfAirPlanes,
+    this->AirSeed, this->Milkiness, debugAir);
 }
 
 //------------------------------------------------------------------------------
@@ -560,6 +595,12 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RefractionRatio: " << this->RefractionRatio << "\n";
   os << indent << "FresnelPower: " << this->FresnelPower << "\n";
   os << indent << "BackNormalWeight: " << this->BackNormalWeight << "\n";
+  os << indent << "PlacementBounds: " << this->PlacementBounds[0];
+  for (int i = 1; i < 6; ++i)
+  {
+    os << ", " << this->PlacementBounds[i];
+  }
+  os << "\n";
   os << indent << "TwoSidedRefraction: " << (this->TwoSidedRefraction ? "On" : "Off") << "\n";
   os << indent << "TwoSidedMethod: "
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";

@@ -135,6 +135,25 @@ public:
 
   ///@{
   /**
+   * Bounds of the whole ice object when the input is one piece of it (distributed rendering:
+   * ParaView's Ice representation sets the bounds of the data on all ranks). Cracks, air planes
+   * and the bump scale are placed in these bounds instead of the input's, so every piece looks
+   * as its part of the whole does; they are also the mapper's bounds (the dynamic cube map's
+   * centre, culling) and empty input is a piece with nothing to draw, not an error.
+   * Uninitialized (the default, vtkMath::UninitializeBounds): the input's own bounds.
+   */
+  vtkSetVector6Macro(PlacementBounds, double);
+  vtkGetVector6Macro(PlacementBounds, double);
+  ///@}
+
+  /**
+   * The mapper's bounds: PlacementBounds when set (the input is still checked), else the input's.
+   */
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+
+  ///@{
+  /**
    * Tint multiplied into the ice colour, each component clamped to [0, 1]. Default white. A
    * colour with a NaN component is refused with a warning. When the mapper colours by scalars
    * (ScalarVisibility with point scalars or a selected point array, mapped through the lookup
@@ -469,8 +488,12 @@ protected:
   std::unique_ptr<vtkIceStaticEnvironment> Environment;
   vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples, if bound here
 
-  // The largest extent of the prepared input's bounds.
+  // The bounds the look is placed in (PlacementBounds, else the prepared input's), and their
+  // largest extent.
+  void GetLookBounds(double bounds[6]);
   double InputExtent();
+  bool EmptyInputIsPiece() override;
+  double PlacementBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
 
   std::unique_ptr<vtkIceInterior> Interior; // cracks and air
 

@@ -171,7 +171,8 @@ void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
 {
   const bool same = this->Placed && ice == this->PlacedFor && ice->GetMTime() == this->PlacedTime &&
     settings.Cracks == this->Current.Cracks && settings.CrackSeed == this->Current.CrackSeed &&
-    settings.AirPlanes == this->Current.AirPlanes && settings.AirSeed == this->Current.AirSeed;
+    settings.AirPlanes == this->Current.AirPlanes && settings.AirSeed == this->Current.AirSeed &&
+    std::equal(settings.Bounds, settings.Bounds + 6, this->Current.Bounds);
   this->Current = settings;
   if (same)
   {
@@ -181,8 +182,7 @@ void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
   this->PlacedFor = ice;
   this->PlacedTime = ice->GetMTime();
   this->Uploaded = false;
-  double bounds[6];
-  ice->GetBounds(bounds);
+  const double* bounds = settings.Bounds;
 
   // The three models' outlines and curvatures, as vtkIceCrackGeometry picks them.
   this->Outlines.assign(3 * OutlineSamples, 0.0f);

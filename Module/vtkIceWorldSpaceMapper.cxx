@@ -65,6 +65,10 @@ bool vtkIceWorldSpaceMapper::PrepareInput(vtkPolyData* input)
   this->PreparedValid = false;
   this->PreparedInput = nullptr;
 
+  if (input->GetNumberOfPoints() == 0 && this->EmptyInputIsPiece())
+  {
+    return false;
+  }
   const std::string problem = CheckInput(input);
   if (!problem.empty())
   {

@@ -107,6 +107,10 @@ protected:
   // look at what they need (and warn) here.
   virtual void InputPrepared() {}
 
+  // Whether empty input is a piece of distributed ice with nothing here (drawn as nothing,
+  // silently) rather than an error.
+  virtual bool EmptyInputIsPiece() { return false; }
+
   vtkSmartPointer<vtkPolyData> PreparedInput;
   vtkMTimeType PreparedInputTime = 0;
   vtkPolyData* PreparedSource = nullptr;

@@ -4,9 +4,14 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkIceMapper.h"
+#include "vtkIceRedistributeObjects.h"
+#include "vtkMath.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiProcessController.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"
+#include "vtkPVRenderView.h"
 #include "vtkPVView.h"
 #include "vtkPolyData.h"
 
@@ -23,6 +28,46 @@ vtkIceRepresentation::vtkIceRepresentation()
   // Without a skybox ParaView's views have no environment: the built-in sky is the default.
   this->ForEachIceMapper([](vtkIceMapper* m) { m->WarnWithoutEnvironmentOff(); });
   this->SetupDefaults();
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  this->Distributed = controller && controller->GetNumberOfProcesses() > 1;
+}
+
+//------------------------------------------------------------------------------
+vtkIceRedistributeObjects* vtkIceRepresentation::GetRedistribution()
+{
+  return this->Distributed ? this->Redistribute.Get() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkIceRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  auto* pieces = vtkMultiBlockDataSet::SafeDownCast(this->MultiBlockMaker->GetOutputDataObject(0));
+  if (this->Distributed && pieces)
+  {
+    // Every rank runs this together (ParaView updates representations on all ranks), as the
+    // redistribution needs. Its result replaces the surface ParaView hands to the view (as the
+    // only block), which ParaView's later spatial redistribution leaves alone (REQUEST_UPDATE).
+    vtkNew<vtkMultiBlockDataSet> local;
+    local->ShallowCopy(pieces);
+    this->MergePiece->SetInputDataObject(local);
+    this->Redistribute->SetInputConnection(this->MergePiece->GetOutputPort());
+    this->Redistribute->Modified();
+    this->Redistribute->Update();
+    vtkNew<vtkMultiBlockDataSet> objects;
+    objects->SetBlock(0, this->Redistribute->GetOutput());
+    pieces->ShallowCopy(objects);
+    double bounds[6];
+    this->Redistribute->GetGlobalBounds(bounds);
+    // On the mappers directly: modifying the representation here would update it again.
+    static_cast<vtkIceMapper*>(this->Mapper)->SetPlacementBounds(bounds);
+    static_cast<vtkIceMapper*>(this->LODMapper)->SetPlacementBounds(bounds);
+  }
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -51,6 +96,12 @@ int vtkIceRepresentation::ProcessViewRequest(
   {
     return 0;
   }
+  if (request_type == vtkPVView::REQUEST_UPDATE() && this->Distributed)
+  {
+    // The ice objects are whole on their ranks: ParaView's spatial redistribution for ordered
+    // compositing would cut them again.
+    vtkPVRenderView::SetOrderedCompositingConfiguration(inInfo, this, 0);
+  }
   if (request_type == vtkPVView::REQUEST_RENDER())
   {
     // The superclass has just handed the delivered (composite) pieces to the mappers: merge each
@@ -68,8 +119,12 @@ int vtkIceRepresentation::ProcessViewRequest(
     merge(this->LODMapper, this->MergeLOD);
     // Empty data is common in ParaView (an iso-value out of range, an empty block or piece); the
     // ice mapper reports it as an error, ParaView's surface draws nothing: so does this.
+    // A rank without ice of a distributed surface still takes part in the frame (the dynamic
+    // cube map is composited by all ranks): its mapper draws nothing (PlacementBounds).
     auto* surface = vtkDataSet::SafeDownCast(this->Mapper->GetInputDataObject(0, 0));
-    const bool empty = !surface || surface->GetNumberOfPoints() == 0;
+    const bool empty = this->Distributed
+      ? !vtkMath::AreBoundsInitialized(this->Redistribute->GetGlobalBounds())
+      : !surface || surface->GetNumberOfPoints() == 0;
     this->Actor->SetVisibility(this->GetVisibility() && !empty);
   }
   return 1;

@@ -9,6 +9,13 @@
  * works as for "Surface": the mapper tints the ice with the mapped colours (vtkIceMapper,
  * ScalarVisibility); "Solid Color" gives the ice colour (IceColor).
  *
+ * Distributed (pvbatch or pvserver on several ranks): ParaView's partition cuts objects, and
+ * two-sided refraction needs each object whole. The surface is redistributed by object
+ * (vtkIceRedistributeObjects: every connected surface whole on one rank, objects dealt out by
+ * size) and both mappers get the bounds of the whole surface (vtkIceMapper::PlacementBounds), so
+ * cracks, air and bumps are where one process puts them. With translucent geometry in the view
+ * (ParaView's ordered compositing) the ice is not moved again by ParaView's spatial partition.
+ *
  * The ice properties forward to both mappers. Two-sided refraction, cracks and air need
  * vtkIcePass, which the "Ice View" (vtkPVIceRenderView) installs; in an ordinary render view
  * the ice is one-sided and has no interior.
@@ -22,6 +29,7 @@
 
 class vtkCompositeDataGeometryFilter;
 class vtkIceMapper;
+class vtkIceRedistributeObjects;
 
 class ICEVIEWS_EXPORT vtkIceRepresentation : public vtkGeometryRepresentationWithFaces
 {
@@ -62,9 +70,18 @@ public:
   int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
     vtkInformation* outInfo) override;
 
+  /**
+   * The redistribution of the last update (number of objects, seconds; see
+   * vtkIceRedistributeObjects), for tests and benchmarks. Null with one process.
+   */
+  vtkIceRedistributeObjects* GetRedistribution();
+
 protected:
   vtkIceRepresentation();
   ~vtkIceRepresentation() override;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
 
 private:
   vtkIceRepresentation(const vtkIceRepresentation&) = delete;
@@ -75,6 +92,10 @@ private:
 
   vtkNew<vtkCompositeDataGeometryFilter> Merge;
   vtkNew<vtkCompositeDataGeometryFilter> MergeLOD;
+  // Several processes only: the merged surface and its redistribution by object.
+  bool Distributed = false;
+  vtkNew<vtkCompositeDataGeometryFilter> MergePiece;
+  vtkNew<vtkIceRedistributeObjects> Redistribute;
 };
 
 #endif

@@ -2,8 +2,11 @@
 
 #include "vtkIceCubeMapPass.h"
 #include "vtkIcePass.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
+#include "vtkPVIceCubeMapCompositor.h"
+#include "vtkRenderer.h"
 #include "vtkPVSynchronizedRenderer.h"
 
 vtkStandardNewMacro(vtkPVIceRenderView);
@@ -16,6 +19,32 @@ vtkPVIceRenderView::vtkPVIceRenderView()
   vtkNew<vtkPVDefaultPass> geometry;
   this->IcePass->SetDelegatePass(geometry);
   this->SynchronizedRenderers->SetRenderPass(this->IcePass);
+  // On several ranks each renders its part of the scene: the cube-map faces are composited.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    this->CubeMapPass->SetCompositor(this->Compositor);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVIceRenderView::Render(bool interactive, bool skip_rendering)
+{
+  // IceT paints the background black while the ranks draw; the faces show the user's (set on
+  // the renderer by UpdateBackground, which the superclass calls again).
+  this->UpdateBackground();
+  vtkRenderer* renderer = this->GetRenderer();
+  this->Compositor->SetBackground(renderer->GetBackground());
+  this->Compositor->SetBackground2(renderer->GetBackground2());
+  this->Compositor->SetGradientBackground(renderer->GetGradientBackground());
+  this->Compositor->UseBackgroundOn();
+  this->Superclass::Render(interactive, skip_rendering);
+}
+
+//------------------------------------------------------------------------------
+vtkPVIceCubeMapCompositor* vtkPVIceRenderView::GetCubeMapCompositor()
+{
+  return this->Compositor;
 }
 
 //------------------------------------------------------------------------------

@@ -9,6 +9,10 @@
  * CubeMapUpdateMode); otherwise the ice refracts and reflects the view's environment: the
  * background's skybox or environment texture (equirectangular images are converted to a cube
  * map), lined up with ParaView's own skybox.
+ *
+ * On several ranks (pvbatch or pvserver under MPI) each rank renders the cube-map faces with its
+ * own part of the scene and vtkPVIceCubeMapCompositor composites them by depth, so ice reflects
+ * geometry held by any rank.
  */
 #ifndef vtkPVIceRenderView_h
 #define vtkPVIceRenderView_h
@@ -19,6 +23,7 @@
 
 class vtkIceCubeMapPass;
 class vtkIcePass;
+class vtkPVIceCubeMapCompositor;
 
 class ICEVIEWS_EXPORT vtkPVIceRenderView : public vtkPVRenderView
 {
@@ -47,9 +52,17 @@ public:
 
   vtkIcePass* GetIcePass();
 
+  /**
+   * What composites the dynamic cube maps across ranks (used with several ranks only); its
+   * counters are for benchmarks.
+   */
+  vtkPVIceCubeMapCompositor* GetCubeMapCompositor();
+
 protected:
   vtkPVIceRenderView();
   ~vtkPVIceRenderView() override;
+
+  void Render(bool interactive, bool skip_rendering) override;
 
 private:
   vtkPVIceRenderView(const vtkPVIceRenderView&) = delete;
@@ -57,6 +70,7 @@ private:
 
   vtkNew<vtkIcePass> IcePass;
   vtkNew<vtkIceCubeMapPass> CubeMapPass;
+  vtkNew<vtkPVIceCubeMapCompositor> Compositor;
   bool DynamicEnvironment = false;
 };
 

@@ -7,20 +7,7 @@ import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ice_paraview_helpers as h  # noqa: E402
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-
-
-def read(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    width, height, _ = reader.GetOutput().GetDimensions()
-    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())
-    return pixels.reshape(height, width, -1)[::-1, :, :3].astype(int)
-
-
-script, state, batch = (read(path) for path in sys.argv[1:4])
+script, state, batch = (h.read_png(path) for path in sys.argv[1:4])
 for name, image in (("state file", state), ("pvbatch", batch)):
     d = h.difference(script, image)
     h.check(d.mean() < 0.5 and numpy.percentile(d, 99) <= 8,

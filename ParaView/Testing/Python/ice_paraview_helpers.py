@@ -58,6 +58,11 @@ def capture(view, path):
     """Renders `view`, saves it to `path` and returns the image as an (h, w, 3) int array."""
     Render(view)
     SaveScreenshot(path, view, ImageResolution=SIZE)
+    return read_png(path)
+
+
+def read_png(path):
+    """The PNG image at `path` as an (h, w, 3) int array, top row first."""
     reader = vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()

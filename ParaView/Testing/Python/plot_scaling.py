@@ -1,0 +1,45 @@
+"""prefix image.png: plots what distributed_scene.py measured with chunks on 1, 2 and 4 ranks
+(prefix-N-<rank>.txt): frame times and memory per rank (Documentation/paraview.md)."""
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def load(prefix, ranks):
+    found = []
+    for rank in range(ranks):
+        values = {}
+        with open("%s-%d-%d.txt" % (prefix, ranks, rank)) as stats:
+            for line in stats:
+                words = line.split()
+                if len(words) == 2:
+                    values[words[0]] = float(words[1])
+                elif len(words) == 3:  # timer: name count seconds
+                    values[words[0]] = float(words[2])
+        found.append(values)
+    return found
+
+
+prefix, image = sys.argv[1], sys.argv[2]
+runs = {n: load(prefix, n) for n in (1, 2, 4)}
+figure, (times, memory) = plt.subplots(1, 2, figsize=(10, 4))
+ranks = list(runs)
+slowest = lambda key: [max(r.get(key, 0.0) for r in runs[n]) for n in ranks]  # noqa: E731
+times.plot(ranks, slowest("frame_s"), "o-", label="frame, camera moved, cube map kept")
+times.plot(ranks, slowest("frame_cubemap_s"), "s-", label="frame, camera still, cube map re-rendered")
+times.plot(ranks, slowest("first_frame_s"), "^-", label="first frame (incl. data)")
+times.set_xlabel("MPI ranks (2 cores, oversubscribed)")
+times.set_ylabel("seconds (slowest rank)")
+times.set_xticks(ranks)
+times.legend(fontsize=8)
+times.set_title("500 ice chunks + terrain, llvmpipe")
+for n in ranks:
+    memory.scatter([n] * n, [r["max_rss_mib"] for r in runs[n]], color="tab:blue")
+memory.set_xlabel("MPI ranks")
+memory.set_ylabel("peak resident memory per rank (MiB)")
+memory.set_xticks(ranks)
+memory.set_title("memory per rank")
+figure.tight_layout()
+figure.savefig(image, dpi=80)
