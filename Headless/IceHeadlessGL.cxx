@@ -69,6 +69,10 @@
   F(void, glTexParameterf, (GLenum a, GLenum b, GLfloat c), (a, b, c))                         \
   F(void, glTexParameterfv, (GLenum a, GLenum b, const GLfloat* c), (a, b, c))                 \
   F(void, glTexParameteri, (GLenum a, GLenum b, GLint c), (a, b, c))                           \
+  F(void, glTexSubImage2D,                                                                     \
+    (GLenum a, GLint b, GLint c, GLint d, GLsizei e, GLsizei f, GLenum g, GLenum h,            \
+      const GLvoid* i),                                                                        \
+    (a, b, c, d, e, f, g, h, i))                                                               \
   F(void, glViewport, (GLint a, GLint b, GLsizei c, GLsizei d), (a, b, c, d))
 // clang-format on
 
