@@ -377,7 +377,6 @@ void vtkIceCubeMapPass::vtkInternals::CompositeFace(vtkIceCubeMapPass* pass, Cub
   map.Texture->Deactivate();
   glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(packBuffer));
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
-  vtkOpenGLCheckErrorMacro("failed after compositing a cube-map face");
 }
 
 //------------------------------------------------------------------------------
