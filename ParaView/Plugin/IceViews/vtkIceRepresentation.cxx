@@ -11,7 +11,6 @@
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"
-#include "vtkPVRenderView.h"
 #include "vtkPVView.h"
 #include "vtkPolyData.h"
 
@@ -51,7 +50,7 @@ int vtkIceRepresentation::RequestData(
   {
     // Every rank runs this together (ParaView updates representations on all ranks), as the
     // redistribution needs. Its result replaces the surface ParaView hands to the view (as the
-    // only block), which ParaView's later spatial redistribution leaves alone (REQUEST_UPDATE).
+    // only block; a second vtkPVView::SetPiece would be ignored).
     vtkNew<vtkMultiBlockDataSet> local;
     local->ShallowCopy(pieces);
     this->MergePiece->SetInputDataObject(local);
@@ -95,12 +94,6 @@ int vtkIceRepresentation::ProcessViewRequest(
   if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
   {
     return 0;
-  }
-  if (request_type == vtkPVView::REQUEST_UPDATE() && this->Distributed)
-  {
-    // The ice objects are whole on their ranks: ParaView's spatial redistribution for ordered
-    // compositing would cut them again.
-    vtkPVRenderView::SetOrderedCompositingConfiguration(inInfo, this, 0);
   }
   if (request_type == vtkPVView::REQUEST_RENDER())
   {

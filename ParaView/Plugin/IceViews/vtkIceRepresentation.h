@@ -14,7 +14,8 @@
  * (vtkIceRedistributeObjects: every connected surface whole on one rank, objects dealt out by
  * size) and both mappers get the bounds of the whole surface (vtkIceMapper::PlacementBounds), so
  * cracks, air and bumps are where one process puts them. With translucent geometry in the view
- * (ParaView's ordered compositing) the ice is not moved again by ParaView's spatial partition.
+ * ParaView's ordered compositing moves the ice again to its spatial partition (objects cut at
+ * its planes), which the order of compositing needs.
  *
  * The ice properties forward to both mappers. Two-sided refraction, cracks and air need
  * vtkIcePass, which the "Ice View" (vtkPVIceRenderView) installs; in an ordinary render view

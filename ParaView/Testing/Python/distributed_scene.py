@@ -1,12 +1,13 @@
 """A scene for distributed rendering: ice objects and ordinary data that ParaView's partition
 spreads over the ranks, a dynamic cube map, cracks and air.
 
-    mpiexec -n N pvbatch --symmetric distributed_scene.py image.png stats-prefix [chunks]
+    mpiexec -n N pvbatch --symmetric distributed_scene.py image.png stats-prefix [chunks|translucent]
 
 Every rank runs the script (--symmetric) and writes stats-prefix-<rank>.txt: its local ice (cells,
 connected objects) per ice representation and the number of objects of the whole surface. With
 `chunks` > 0 the scene is the benchmark's instead: that many ice chunks over a terrain, and the
-stats hold frame times and memory (Documentation/paraview.md, parallel section).
+stats hold frame times and memory (Documentation/paraview.md, parallel section). With
+`translucent` a translucent sphere joins the scene (ParaView then composites in visibility order).
 """
 import os
 import resource
@@ -26,7 +27,8 @@ controller = vtkMultiProcessController.GetGlobalController()
 vtkTimerLog.SetMaxEntries(100000)
 rank = controller.GetLocalProcessId()
 image_path, stats_prefix = sys.argv[1], sys.argv[2]
-chunks = int(sys.argv[3]) if len(sys.argv) > 3 else 0
+translucent = len(sys.argv) > 3 and sys.argv[3] == "translucent"
+chunks = int(sys.argv[3]) if len(sys.argv) > 3 and not translucent else 0
 
 view = CreateView("IceView")
 view.ViewSize = [480, 360]
@@ -58,6 +60,11 @@ if chunks == 0:
     ice = {"spheres": ice_display(AppendDatasets(Input=spheres), 3, 8),
            "iso": ice_display(Contour(Input=wavelet, ContourBy=["POINTS", "RTData"],
                                       Isosurfaces=[240.0]), 2, 6)}
+    if translucent:
+        glass = Show(Sphere(Center=[0, 2, 14], Radius=5, ThetaResolution=64, PhiResolution=64),
+                     view)
+        glass.Opacity = 0.4
+        glass.DiffuseColor = [0.2, 0.9, 0.3]
     floor = Slice(Input=wavelet)
     floor.SliceType.Origin = [0, -12, 0]
     floor.SliceType.Normal = [0, 1, 0]
