@@ -30,6 +30,13 @@ slowest = lambda key: [max(r.get(key, 0.0) for r in runs[n]) for n in ranks]  # 
 times.plot(ranks, slowest("frame_s"), "o-", label="frame, camera moved, cube map kept")
 times.plot(ranks, slowest("frame_cubemap_s"), "s-", label="frame, camera still, cube map re-rendered")
 times.plot(ranks, slowest("first_frame_s"), "^-", label="first frame (incl. data)")
+# Under IceT (2 ranks and more): its draw callback (each rank's rendering, cube map included) and
+# its compositing, for the frame after a camera move.
+parallel = [n for n in ranks if n > 1]
+times.plot(parallel, [max(r["frame_s_icet_render"] for r in runs[n]) for n in parallel], "v--",
+           label="  of which local rendering (IceT draw)")
+times.plot(parallel, [max(r["frame_s_icet_composite"] for r in runs[n]) for n in parallel], "x--",
+           label="  of which IceT compositing")
 times.set_xlabel("MPI ranks (2 cores, oversubscribed)")
 times.set_ylabel("seconds (slowest rank)")
 times.set_xticks(ranks)
