@@ -124,19 +124,48 @@ std::vector<vtkProp*> SceneProps(vtkRenderer* renderer)
   return scene;
 }
 
+// A background as vtkViewport has it.
+struct Background
+{
+  double Color[3];
+  double Color2[3];
+  bool Gradient;
+};
+
+// The renderer's background, or the compositor's when it gives one (IceT paints the renderer's
+// black while the ranks draw).
+Background GetBackground(vtkRenderer* renderer, vtkIceCubeMapCompositor* compositor)
+{
+  Background background;
+  const bool own = !compositor || !compositor->GetUseBackground();
+  std::copy_n(own ? renderer->GetBackground() : compositor->GetBackground(), 3, background.Color);
+  std::copy_n(
+    own ? renderer->GetBackground2() : compositor->GetBackground2(), 3, background.Color2);
+  background.Gradient =
+    own ? renderer->GetGradientBackground() : compositor->GetGradientBackground();
+  return background;
+}
+
+void SetBackground(vtkRenderer* renderer, const Background& background)
+{
+  renderer->SetBackground(background.Color[0], background.Color[1], background.Color[2]);
+  renderer->SetBackground2(background.Color2[0], background.Color2[1], background.Color2[2]);
+  renderer->SetGradientBackground(background.Gradient);
+}
+
 // Changes whenever what the cube map at `center` shows may have changed; camera-following lights
 // and the camera itself are left out on purpose.
-size_t SceneSignature(
-  vtkRenderer* renderer, const std::vector<vtkProp*>& scene, const double center[3], int faceSize)
+size_t SceneSignature(vtkRenderer* renderer, const Background& background,
+  const std::vector<vtkProp*>& scene, const double center[3], int faceSize)
 {
   size_t seed = std::hash<int>()(faceSize);
   for (int i = 0; i < 3; ++i)
   {
     HashCombine(seed, std::hash<double>()(center[i]));
-    HashCombine(seed, std::hash<double>()(renderer->GetBackground()[i]));
-    HashCombine(seed, std::hash<double>()(renderer->GetBackground2()[i]));
+    HashCombine(seed, std::hash<double>()(background.Color[i]));
+    HashCombine(seed, std::hash<double>()(background.Color2[i]));
   }
-  HashCombine(seed, std::hash<bool>()(renderer->GetGradientBackground()));
+  HashCombine(seed, std::hash<bool>()(background.Gradient));
   for (vtkProp* prop : scene)
   {
     HashCombine(seed, std::hash<const void*>()(prop));
@@ -173,6 +202,8 @@ public:
   vtkNew<vtkCamera> FaceCamera;
   vtkNew<vtkTransform> LightTransform;
   bool UpdateRequested = false;
+  std::vector<float> FaceColors; // a face read back for compositing, kept between faces
+  std::vector<float> FaceDepths;
 
   // Renders the next pending face of `map` from `center`, into half floats when
   // `highDynamicRange`.
@@ -309,17 +340,8 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   this->SetupCamera(pass, face, center, scene, mainCamera);
   renderer->SetActiveCamera(this->FaceCamera);
   renderer->SetUserLightTransform(this->LightTransform);
-  double background[3];
-  double background2[3];
-  renderer->GetBackground(background);
-  renderer->GetBackground2(background2);
-  const bool gradient = renderer->GetGradientBackground();
-  if (pass->Compositor && pass->Compositor->GetUseBackground())
-  {
-    renderer->SetBackground(pass->Compositor->GetBackground());
-    renderer->SetBackground2(pass->Compositor->GetBackground2());
-    renderer->SetGradientBackground(pass->Compositor->GetGradientBackground());
-  }
+  const Background frameBackground = GetBackground(renderer, nullptr);
+  SetBackground(renderer, GetBackground(renderer, pass->Compositor));
 
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
@@ -343,9 +365,7 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
 
   this->FrameBuffer->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
-  renderer->SetBackground(background);
-  renderer->SetBackground2(background2);
-  renderer->SetGradientBackground(gradient);
+  SetBackground(renderer, frameBackground);
   renderer->SetUserLightTransform(nullptr);
   renderer->SetActiveCamera(mainCamera);
   ++pass->NumberOfFaceRenders;
@@ -357,8 +377,10 @@ void vtkIceCubeMapPass::vtkInternals::CompositeFace(vtkIceCubeMapPass* pass, Cub
 {
   const int size = pass->FaceSize;
   const vtkIdType pixels = static_cast<vtkIdType>(size) * size;
-  std::vector<float> rgba(4 * pixels);
-  std::vector<float> depth(pixels);
+  std::vector<float>& rgba = this->FaceColors;
+  std::vector<float>& depth = this->FaceDepths;
+  rgba.resize(4 * pixels);
+  depth.resize(pixels);
   // A compositing pass may leave pixel buffers bound (IceT): read into and draw from memory.
   GLint packBuffer = 0;
   GLint unpackBuffer = 0;
@@ -458,6 +480,7 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
     double Restart; // 0 or 1: a double, to agree with other processes on it
   };
   std::vector<Update> updates;
+  const Background faceBackground = GetBackground(renderer, this->Compositor);
   for (vtkProp* iceProp : iceProps)
   {
     Update update;
@@ -470,7 +493,8 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
     {
       update.Center[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
     }
-    const size_t signature = SceneSignature(renderer, scene, update.Center, this->FaceSize);
+    const size_t signature =
+      SceneSignature(renderer, faceBackground, scene, update.Center, this->FaceSize);
     auto inserted = this->Internals->Maps.emplace(iceProp, vtkInternals::CubeMap());
     update.Map = &inserted.first->second;
     // A new size or texel type reallocates the texture: all six faces are rendered again.

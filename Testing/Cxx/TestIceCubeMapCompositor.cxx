@@ -5,6 +5,8 @@
 //   which it does not without the compositor;
 // - UseBackground: the faces are rendered on the compositor's background (green) while the
 //   renderer keeps its own (black) for the frame;
+// - OnChange: a new compositor background (the renderer's stays as it was) renders the cube map
+//   again;
 // - the other process asks for an update (its restart flags reduced by maximum): a Manual cube
 //   map is rendered again, and not when nobody asks.
 #include "IceTestUtilities.h"
@@ -119,6 +121,16 @@ int TestIceCubeMapCompositor(int, char*[])
     green.Green > 2000 && alone.Green < 50, "faces are rendered on the compositor's background");
   ok &= Expect(green.Outside == 0 && background[0] == 0.0 && background[1] == 0.0,
     "the renderer keeps its own background");
+
+  cubeMaps->SetUpdateModeToOnChange();
+  scene.Render();
+  const vtkIdType settled = cubeMaps->GetNumberOfFaceRenders();
+  scene.Render();
+  ok &= Expect(cubeMaps->GetNumberOfFaceRenders() == settled, "OnChange: no update when unchanged");
+  other->SetBackground(0.0, 0.0, 1.0);
+  scene.Render();
+  ok &= Expect(cubeMaps->GetNumberOfFaceRenders() >= settled + 6,
+    "OnChange: the compositor's new background updates the cube map");
 
   cubeMaps->SetUpdateModeToManual();
   scene.Render();

@@ -44,13 +44,15 @@ void vtkPVIceCubeMapCompositor::CompositeFace(vtkIdType pixels, float* rgba, flo
   const double start = vtkTimerLog::GetUniversalTime();
   vtkTimerLog::MarkStartEvent("Ice: composite cube-map face");
   // Depth and colour of a pixel side by side, so one gather brings every process's face.
-  std::vector<float> local(5 * pixels);
+  std::vector<float>& local = this->Local;
+  local.resize(5 * pixels);
   for (vtkIdType p = 0; p < pixels; ++p)
   {
     local[5 * p] = depth[p];
     std::copy(rgba + 4 * p, rgba + 4 * p + 4, &local[5 * p + 1]);
   }
-  std::vector<float> all(local.size() * processes);
+  std::vector<float>& all = this->All;
+  all.resize(local.size() * processes);
   this->Controller->AllGather(local.data(), all.data(), static_cast<vtkIdType>(local.size()));
   // The nearest fragment; on equal depth (the background everywhere) the lowest rank's, so
   // every process keeps the same.

@@ -13,6 +13,8 @@
 #include "IceViewsModule.h" // for export macro
 #include "vtkIceCubeMapCompositor.h"
 
+#include <vector> // for members
+
 class vtkMultiProcessController;
 
 class ICEVIEWS_EXPORT vtkPVIceCubeMapCompositor : public vtkIceCubeMapCompositor
@@ -48,6 +50,9 @@ protected:
   vtkMultiProcessController* Controller = nullptr;
   vtkIdType NumberOfFaces = 0;
   double CompositeSeconds = 0.0;
+  // This process's face and every process's, kept between faces.
+  std::vector<float> Local;
+  std::vector<float> All;
 
 private:
   vtkPVIceCubeMapCompositor(const vtkPVIceCubeMapCompositor&) = delete;
