@@ -1,5 +1,6 @@
 #include "vtkIceMapper.h"
 
+#include "vtkIceBackfaceCulling.h"
 #include "vtkIceBumpFS.h"
 #include "vtkIceGlistening.h"
 #include "vtkIceGlisteningTexture.h"
@@ -73,6 +74,7 @@ vtkIceMapper::vtkIceMapper()
   , SinglePass(new vtkIceSinglePassInterior)
   , Interior(new vtkIceInterior)
   , Environment(new vtkIceStaticEnvironment)
+  , Culling(new vtkIceBackfaceCulling)
 {
 }
 
@@ -279,11 +281,26 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->NormalMap->Render(ren);
   }
   this->Superclass::RenderPieceStart(ren, act);
+  if (this->CullHiddenBackfaces)
+  {
+    this->CheckInputClosure();
+  }
+  const bool cull = this->CullHiddenBackfaces &&
+    vtkIceBackfaceCulling::BackfacesHidden(ren, act, this, this->InputClosedOutward);
+  if (cull)
+  {
+    this->Culling->Begin(ren);
+  }
+  if (!vtkIceBackfaceCulling::InSubPass(act))
+  {
+    this->LastDrawCulledBackfaces = cull;
+  }
 }
 
 //------------------------------------------------------------------------------
 void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
+  this->Culling->End();
   this->Superclass::RenderPieceFinish(ren, act);
   if (this->NormalMap && this->BumpStrength > 0.0)
   {
@@ -501,16 +518,25 @@ void vtkIceMapper::InputPrepared()
 }
 
 //------------------------------------------------------------------------------
+void vtkIceMapper::CheckInputClosure()
+{
+  if (this->InputOpenEdges < 0)
+  {
+    const vtkIceSurfaceCheck::Closure closure =
+      vtkIceSurfaceCheck::CheckClosure(this->PreparedInput);
+    this->InputOpenEdges = closure.OpenEdges;
+    this->InputClosedOutward = closure.IsClosedOutward() && !this->InputFlat;
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkIceMapper::UsableCrackClipping()
 {
   if (this->CrackClipping != Geometry)
   {
     return this->CrackClipping;
   }
-  if (this->InputOpenEdges < 0)
-  {
-    this->InputOpenEdges = vtkIceSurfaceCheck::CountOpenEdges(this->PreparedInput);
-  }
+  this->CheckInputClosure();
   if (this->InputOpenEdges == 0)
   {
     return Geometry;
@@ -604,6 +630,8 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TwoSidedRefraction: " << (this->TwoSidedRefraction ? "On" : "Off") << "\n";
   os << indent << "TwoSidedMethod: "
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
+  os << indent << "CullHiddenBackfaces: " << (this->CullHiddenBackfaces ? "On" : "Off") << "\n";
+  os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
   os << indent << "InteriorMethod: "
      << (this->InteriorMethod == InteriorSinglePass ? "SinglePass" : "PaperPasses") << "\n";
   os << indent << "IceColor: (" << this->IceColor[0] << ", " << this->IceColor[1] << ", "

@@ -42,6 +42,7 @@ class vtkActor;
 class vtkIceInterior;
 class vtkIceSinglePassInterior;
 class vtkIceStaticEnvironment;
+class vtkIceBackfaceCulling;
 class vtkIceGlisteningTexture;
 class vtkProp;
 class vtkTexture;
@@ -132,6 +133,25 @@ public:
   vtkGetMacro(WarnWithoutEnvironment, bool);
   vtkBooleanMacro(WarnWithoutEnvironment, bool);
   ///@}
+
+  ///@{
+  /**
+   * Whether the ice skips its back faces in a draw where none of them can be seen (default on):
+   * a closed surface whose faces point outward (checked once per input), opaque, drawn as a
+   * surface without clipping planes, face culling of its own property or a mirroring transform,
+   * wholly beyond the camera's near plane. Such back faces are hidden by the front faces, but a
+   * CPU renderer shades many of them before the depth test hides them; skipping them saves up to
+   * a quarter of a frame (Documentation/performance.md). Off: both sides are drawn, as VTK does.
+   */
+  vtkSetMacro(CullHiddenBackfaces, bool);
+  vtkGetMacro(CullHiddenBackfaces, bool);
+  vtkBooleanMacro(CullHiddenBackfaces, bool);
+  ///@}
+
+  /**
+   * Whether the mapper's last draw in the main scene skipped the back faces (CullHiddenBackfaces).
+   */
+  vtkGetMacro(LastDrawCulledBackfaces, bool);
 
   ///@{
   /**
@@ -499,8 +519,16 @@ protected:
 
   // What InputPrepared and UsableCrackClipping found about the current input.
   bool InputFlat = false;
-  vtkIdType InputOpenEdges = -1; // counted when Geometry clipping first needs it
   bool WarnedOpenInput = false;
+  // How the input encloses a volume (vtkIceSurfaceCheck::CheckClosure), found when Geometry
+  // clipping or culling first needs it: its open edges, whether it is closed and faces outward.
+  void CheckInputClosure();
+  vtkIdType InputOpenEdges = -1; // -1: not checked yet
+  bool InputClosedOutward = false;
+
+  bool CullHiddenBackfaces = true;
+  bool LastDrawCulledBackfaces = false;
+  std::unique_ptr<vtkIceBackfaceCulling> Culling; // during a draw
 
   // Whether the cracks or air were drawn in a vtkIcePass frame since the mapper last drew
   // without one (see vtkIceWorldSpaceMapper::ForgetRenderPasses).

@@ -11,6 +11,7 @@
 #include "vtkStaticCleanPolyData.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -217,7 +218,7 @@ bool IsFlat(double thickness, double size)
   return thickness <= 1e-5 * size;
 }
 
-vtkIdType CountOpenEdges(vtkPolyData* surface)
+Closure CheckClosure(vtkPolyData* surface)
 {
   vtkNew<vtkStaticCleanPolyData> merge;
   merge->SetInputData(surface);
@@ -228,14 +229,42 @@ vtkIdType CountOpenEdges(vtkPolyData* surface)
   merge->ConvertStripsToPolysOff();
   merge->Update();
   vtkPolyData* merged = merge->GetOutput();
+  vtkPoints* points = merged->GetPoints();
+  const vtkIdType numberOfPoints = merged->GetNumberOfPoints();
 
-  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
-  auto add = [&edges](vtkIdType a, vtkIdType b) {
-    if (a != b)
+  // Every triangle (polygons as fans, strips with their alternating order) with its directed
+  // edges; the components of the surface by union-find over its points.
+  struct Edge
+  {
+    vtkIdType Low, High;
+    bool Forward;
+    bool operator<(const Edge& other) const
     {
-      edges.emplace_back(std::min(a, b), std::max(a, b));
+      return Low != other.Low ? Low < other.Low : High < other.High;
     }
   };
+  std::vector<Edge> edges;
+  std::vector<vtkIdType> parent(static_cast<size_t>(numberOfPoints));
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    parent[i] = i;
+  }
+  auto root = [&parent](vtkIdType i) {
+    while (parent[i] != i)
+    {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
+  auto addEdge = [&](vtkIdType a, vtkIdType b) {
+    if (a != b)
+    {
+      edges.push_back({ std::min(a, b), std::max(a, b), a < b });
+      parent[root(a)] = root(b);
+    }
+  };
+  std::vector<std::array<vtkIdType, 3>> triangles;
   vtkNew<vtkIdList> cell;
   vtkCellArray* polys = merged->GetPolys();
   for (polys->InitTraversal(); polys->GetNextCell(cell);)
@@ -243,7 +272,11 @@ vtkIdType CountOpenEdges(vtkPolyData* surface)
     const vtkIdType n = cell->GetNumberOfIds();
     for (vtkIdType i = 0; i < n; ++i)
     {
-      add(cell->GetId(i), cell->GetId((i + 1) % n));
+      addEdge(cell->GetId(i), cell->GetId((i + 1) % n));
+    }
+    for (vtkIdType i = 1; i + 1 < n; ++i)
+    {
+      triangles.push_back({ cell->GetId(0), cell->GetId(i), cell->GetId(i + 1) });
     }
   }
   vtkCellArray* strips = merged->GetStrips();
@@ -251,23 +284,67 @@ vtkIdType CountOpenEdges(vtkPolyData* surface)
   {
     for (vtkIdType i = 0; i + 2 < cell->GetNumberOfIds(); ++i)
     {
-      add(cell->GetId(i), cell->GetId(i + 1));
-      add(cell->GetId(i + 1), cell->GetId(i + 2));
-      add(cell->GetId(i), cell->GetId(i + 2));
+      const bool even = i % 2 == 0;
+      const std::array<vtkIdType, 3> t = { cell->GetId(even ? i : i + 1),
+        cell->GetId(even ? i + 1 : i), cell->GetId(i + 2) };
+      addEdge(t[0], t[1]);
+      addEdge(t[1], t[2]);
+      addEdge(t[2], t[0]);
+      triangles.push_back(t);
     }
   }
+
+  Closure closure;
   std::sort(edges.begin(), edges.end());
-  vtkIdType open = 0;
   for (size_t i = 0; i < edges.size();)
   {
     size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i])
+    while (j < edges.size() && edges[j].Low == edges[i].Low && edges[j].High == edges[i].High)
     {
       ++j;
     }
-    open += j - i == 1 ? 1 : 0;
+    // Two faces meeting at an edge are oriented alike when they run along it in opposite
+    // directions; more than two faces at one edge have no consistent sides.
+    closure.OpenEdges += j - i == 1 ? 1 : 0;
+    closure.MisorientedEdges +=
+      j - i > 2 || (j - i == 2 && edges[i].Forward == edges[i + 1].Forward) ? 1 : 0;
     i = j;
   }
-  return open;
+
+  // Signed volume per component (divergence theorem, about the bounds' centre for precision):
+  // positive where the faces' order (counter-clockwise seen from outside) points outward.
+  double centre[3] = { 0.0, 0.0, 0.0 };
+  if (numberOfPoints > 0)
+  {
+    double bounds[6];
+    points->GetBounds(bounds);
+    for (int c = 0; c < 3; ++c)
+    {
+      centre[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
+    }
+  }
+  std::vector<double> volume(static_cast<size_t>(numberOfPoints), 0.0);
+  for (const std::array<vtkIdType, 3>& t : triangles)
+  {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      points->GetPoint(t[k], p[k]);
+      vtkMath::Subtract(p[k], centre, p[k]);
+    }
+    double cross[3];
+    vtkMath::Cross(p[1], p[2], cross);
+    volume[root(t[0])] += vtkMath::Dot(p[0], cross) / 6.0;
+  }
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    closure.InwardComponents += root(i) == i && volume[i] < 0.0 ? 1 : 0;
+  }
+  return closure;
+}
+
+vtkIdType CountOpenEdges(vtkPolyData* surface)
+{
+  return CheckClosure(surface).OpenEdges;
 }
 }

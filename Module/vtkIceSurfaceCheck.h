@@ -31,6 +31,22 @@ bool IsFlat(double thickness, double size);
 // coincident points are merged (within 1e-6 of the bounding box's diagonal, so that seams with
 // duplicated points count as joined): 0 for a closed surface.
 vtkIdType CountOpenEdges(vtkPolyData* surface);
+
+// How the surface encloses a volume, points merged as for CountOpenEdges: its open edges, its
+// edges where the faces on either side disagree about which side is outside (or more than two
+// faces meet), and its connected parts whose faces (counter-clockwise seen from outside) face
+// inward (negative signed volume). All 0: every view ray from outside first meets a front face.
+struct Closure
+{
+  vtkIdType OpenEdges = 0;
+  vtkIdType MisorientedEdges = 0;
+  vtkIdType InwardComponents = 0;
+  bool IsClosedOutward() const
+  {
+    return OpenEdges == 0 && MisorientedEdges == 0 && InwardComponents == 0;
+  }
+};
+Closure CheckClosure(vtkPolyData* surface);
 }
 
 #endif

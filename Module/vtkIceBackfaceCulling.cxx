@@ -1,0 +1,105 @@
+#include "vtkIceBackfaceCulling.h"
+
+#include "vtkIcePass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLRenderPass.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtk_glew.h"
+
+//------------------------------------------------------------------------------
+bool vtkIceBackfaceCulling::BackfacesHidden(
+  vtkRenderer* renderer, vtkActor* actor, vtkMapper* mapper, bool closedOutward)
+{
+  vtkProperty* property = actor->GetProperty();
+  if (!closedOutward || property->GetRepresentation() != VTK_SURFACE ||
+    property->GetOpacity() < 1.0 || property->GetBackfaceCulling() ||
+    property->GetFrontfaceCulling() || mapper->GetNumberOfClippingPlanes() > 0 ||
+    actor->GetMatrix()->Determinant() <= 0.0)
+  {
+    return false;
+  }
+  if (vtkIceBackfaceCulling::InSubPass(actor))
+  {
+    return false;
+  }
+  // Every corner of the bounds beyond the near plane: the box, and the ice in it, lies wholly
+  // in front of the camera, so each view ray meets the closed surface at a front face first.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double* bounds = actor->GetBounds();
+  if (!camera || !bounds || !vtkMath::AreBoundsInitialized(bounds))
+  {
+    return false;
+  }
+  double position[3];
+  double direction[3];
+  camera->GetPosition(position);
+  camera->GetDirectionOfProjection(direction);
+  const double nearPlane = camera->GetClippingRange()[0];
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[3] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+      bounds[4 + ((corner >> 2) & 1)] };
+    const double d[3] = { p[0] - position[0], p[1] - position[1], p[2] - position[2] };
+    if (vtkMath::Dot(d, direction) <= nearPlane)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceBackfaceCulling::InSubPass(vtkActor* actor)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  const int passes = keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())
+    ? keys->Length(vtkOpenGLRenderPass::RenderPasses())
+    : 0;
+  for (int i = 0; i < passes; ++i)
+  {
+    if (!vtkIcePass::SafeDownCast(keys->Get(vtkOpenGLRenderPass::RenderPasses(), i)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceBackfaceCulling::Begin(vtkRenderer* renderer)
+{
+  this->End();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    return;
+  }
+  this->State = window->GetState();
+  this->WasEnabled = this->State->GetEnumState(GL_CULL_FACE);
+  GLint mode = GL_BACK;
+  this->State->vtkglGetIntegerv(GL_CULL_FACE_MODE, &mode);
+  this->WasMode = mode;
+  this->State->vtkglCullFace(GL_BACK);
+  this->State->vtkglEnable(GL_CULL_FACE);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceBackfaceCulling::End()
+{
+  if (!this->State)
+  {
+    return;
+  }
+  this->State->vtkglCullFace(static_cast<GLenum>(this->WasMode));
+  this->State->SetEnumState(GL_CULL_FACE, this->WasEnabled);
+  this->State = nullptr;
+}
