@@ -43,8 +43,10 @@ struct Configuration
   std::string Label;
   Material Ice = Material::Plain;
   int Cracks = 0;
-  int AirPlanes = 0;        // vtkIceMapper::NumberOfAirPlanes
-  bool PaperPasses = false; // vtkIceMapper::InteriorPaperPasses instead of the single pass
+  int AirPlanes = 0;                 // vtkIceMapper::NumberOfAirPlanes
+  bool PaperPasses = false;          // vtkIceMapper::InteriorPaperPasses instead of the single pass
+  bool PlainBackfaceCulling = false; // plain VTK with its property's BackfaceCulling on
+  bool DrawEveryFace = false;        // vtkIceMapper::CullHiddenBackfaces off
   bool CubeMap = false;
   int UpdateMode = 0; // vtkIceCubeMapPass::UpdateModes
   int FaceSize = 512;

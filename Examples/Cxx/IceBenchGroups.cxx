@@ -20,6 +20,16 @@ Configuration Plain()
   return c;
 }
 
+// What a VTK user can do for a closed object too (vtkIceMapper::CullHiddenBackfaces does it for
+// the ice where it is safe).
+Configuration PlainCulled()
+{
+  Configuration c = Plain();
+  c.Label = "plain VTK, back faces culled";
+  c.PlainBackfaceCulling = true;
+  return c;
+}
+
 Configuration Ice(
   const std::string& label, Material material, int cracks = 0, bool paperPasses = false)
 {
@@ -29,6 +39,13 @@ Configuration Ice(
   c.Cracks = material == Material::FullLook ? 2 : cracks;
   c.AirPlanes = material == Material::FullLook ? 19 : 0;
   c.PaperPasses = paperPasses;
+  return c;
+}
+
+// The ice without vtkIceMapper::CullHiddenBackfaces: what the culling saves.
+Configuration EveryFace(Configuration c)
+{
+  c.DrawEveryFace = true;
   return c;
 }
 
@@ -61,8 +78,9 @@ std::vector<Group> DefineGroups()
       g.Object = object;
       g.Coverage = coverage;
       g.Quick = fifth && std::string(object) == "teapot";
-      g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
+      g.Configurations = { Plain(), PlainCulled(), Ice("one-sided ice", Material::OneSided),
         Ice("two-sided ice", Material::TwoSided),
+        EveryFace(Ice("two-sided ice, every face drawn", Material::TwoSided)),
         Ice("two-sided ice, exit point", Material::ExitPoint),
         Ice("full look, single pass", Material::FullLook),
         Ice("full look, paper passes", Material::FullLook, 2, true) };

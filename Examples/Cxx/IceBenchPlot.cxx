@@ -139,7 +139,7 @@ void Objects(
     {
       for (int m = 0; m < 4; ++m)
       {
-        if (c.Ice == materials[m] && c.PaperPasses == paper[m])
+        if (c.Ice == materials[m] && c.PaperPasses == paper[m] && !c.DrawEveryFace)
         {
           table->SetValue(r, m + 1, c.Ratio);
           largest = std::max(largest, c.Ratio * 1.05);

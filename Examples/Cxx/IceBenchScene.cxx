@@ -105,6 +105,7 @@ IceBench::Scene IceBench::BuildScene(
     property->SetColor(0.75, 0.85, 0.95);
     property->SetSpecular(0.5);
     property->SetSpecularPower(40.0);
+    property->SetBackfaceCulling(c.PlainBackfaceCulling);
   }
   else
   {
@@ -117,6 +118,7 @@ IceBench::Scene IceBench::BuildScene(
       mapper->SetBumpStrength(0.0);
     }
     mapper->SetNumberOfAirPlanes(0);
+    mapper->SetCullHiddenBackfaces(!c.DrawEveryFace);
     mapper->SetInteriorMethod(
       c.PaperPasses ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorSinglePass);
     actor->SetMapper(mapper);
