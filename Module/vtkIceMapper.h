@@ -137,11 +137,12 @@ public:
   ///@{
   /**
    * Whether the ice skips its back faces in a draw where none of them can be seen (default on):
-   * a closed surface whose faces point outward (checked once per input), opaque, drawn as a
-   * surface without clipping planes, face culling of its own property or a mirroring transform,
-   * wholly beyond the camera's near plane. Such back faces are hidden by the front faces, but a
-   * CPU renderer shades many of them before the depth test hides them; skipping them saves up to
-   * a quarter of a frame (Documentation/performance.md). Off: both sides are drawn, as VTK does.
+   * a closed surface whose faces point outward (checked once per input, from its second frame:
+   * an input changed every frame is not checked), opaque, drawn as a surface without clipping
+   * planes, face culling of its own property or a mirroring transform, wholly beyond the camera's
+   * near plane. Such back faces are hidden by the front faces, but a CPU renderer shades many of
+   * them before the depth test hides them; skipping them saves up to a quarter of a frame
+   * (Documentation/performance.md). Off: both sides are drawn, as VTK does.
    */
   vtkSetMacro(CullHiddenBackfaces, bool);
   vtkGetMacro(CullHiddenBackfaces, bool);
@@ -524,6 +525,7 @@ protected:
   // clipping or culling first needs it: its open edges, whether it is closed and faces outward.
   void CheckInputClosure();
   vtkIdType InputOpenEdges = -1; // -1: not checked yet
+  bool InputDrawnBefore = false; // in the main scene, since the input changed
   bool InputClosedOutward = false;
 
   bool CullHiddenBackfaces = true;

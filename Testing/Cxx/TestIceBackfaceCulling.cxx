@@ -6,6 +6,7 @@
 //   teapot), faces turned inward, one face turned against its neighbours, a mirroring transform,
 //   wireframe, translucent; the user's own BackfaceCulling is VTK's to do. Where culling would
 //   be wrong, the pictures with it on and off would differ: they are compared too.
+// - The input's closure is checked from its second frame: an input modified every frame is not.
 #include "IceTestUtilities.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
@@ -16,6 +17,7 @@
 #include "vtkCellArray.h"
 #include "vtkNew.h"
 #include "vtkPlane.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -160,6 +162,29 @@ int TestIceBackfaceCulling(int, char*[])
   ok = Check(scene, false, "sphere with one face turned against its neighbours") && ok;
   mapper->SetInputData(sphere);
   ok = Check(scene, true, "sphere again") && ok;
+
+  // The closure check waits for the second frame of an input: an input changed every frame
+  // (an animation) is never checked and draws every face.
+  vtkNew<vtkPolyData> moving;
+  moving->DeepCopy(sphere);
+  mapper->SetInputData(moving);
+  scene.Window->Render();
+  ok = Expect(
+         !mapper->GetLastDrawCulledBackfaces(), "a new input: its first frame draws every face") &&
+    ok;
+  scene.Window->Render();
+  ok = Expect(mapper->GetLastDrawCulledBackfaces(), "its second frame is culled") && ok;
+  bool everCulled = false;
+  for (int frame = 0; frame < 4; ++frame)
+  {
+    moving->GetPoints()->SetPoint(0, moving->GetPoints()->GetPoint(0));
+    moving->GetPoints()->Modified();
+    moving->Modified();
+    scene.Window->Render();
+    everCulled = everCulled || mapper->GetLastDrawCulledBackfaces();
+  }
+  ok = Expect(!everCulled, "an input modified every frame is never checked, never culled") && ok;
+  mapper->SetInputData(sphere);
 
   // How the actor is drawn.
   scene.Ice->SetScale(-1.0, 1.0, 1.0);
