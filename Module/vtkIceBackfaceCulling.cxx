@@ -27,10 +27,6 @@ bool vtkIceBackfaceCulling::BackfacesHidden(
   {
     return false;
   }
-  if (vtkIceBackfaceCulling::InSubPass(actor))
-  {
-    return false;
-  }
   // Every corner of the bounds beyond the near plane: the box, and the ice in it, lies wholly
   // in front of the camera, so each view ray meets the closed surface at a front face first.
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -78,28 +74,31 @@ bool vtkIceBackfaceCulling::InSubPass(vtkActor* actor)
 void vtkIceBackfaceCulling::Begin(vtkRenderer* renderer)
 {
   this->End();
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  if (!window)
+  if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()))
   {
-    return;
+    this->Saved.reset(new vtkIceCullingSaver(window->GetState()));
+    this->Saved->Cull(GL_BACK);
   }
-  this->State = window->GetState();
-  this->WasEnabled = this->State->GetEnumState(GL_CULL_FACE);
-  GLint mode = GL_BACK;
-  this->State->vtkglGetIntegerv(GL_CULL_FACE_MODE, &mode);
-  this->WasMode = mode;
-  this->State->vtkglCullFace(GL_BACK);
-  this->State->vtkglEnable(GL_CULL_FACE);
 }
 
 //------------------------------------------------------------------------------
-void vtkIceBackfaceCulling::End()
+vtkIceCullingSaver::vtkIceCullingSaver(vtkOpenGLState* state)
+  : State(state)
+  , Mode(GL_BACK)
+  , Enabled(state, GL_CULL_FACE)
 {
-  if (!this->State)
-  {
-    return;
-  }
-  this->State->vtkglCullFace(static_cast<GLenum>(this->WasMode));
-  this->State->SetEnumState(GL_CULL_FACE, this->WasEnabled);
-  this->State = nullptr;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &this->Mode);
+}
+
+//------------------------------------------------------------------------------
+vtkIceCullingSaver::~vtkIceCullingSaver()
+{
+  this->State->vtkglCullFace(static_cast<unsigned int>(this->Mode));
+}
+
+//------------------------------------------------------------------------------
+void vtkIceCullingSaver::Cull(unsigned int face)
+{
+  this->State->vtkglCullFace(face);
+  this->State->vtkglEnable(GL_CULL_FACE);
 }

@@ -5,20 +5,40 @@
 #ifndef vtkIceBackfaceCulling_h
 #define vtkIceBackfaceCulling_h
 
+#include "vtkOpenGLState.h" // for vtkIceCullingSaver's member
+
+#include <memory> // for members
+
 class vtkActor;
 class vtkMapper;
-class vtkOpenGLState;
 class vtkRenderer;
+
+// Whether faces are culled and which, saved when made and put back when destroyed; Cull changes
+// both in between.
+class vtkIceCullingSaver
+{
+public:
+  explicit vtkIceCullingSaver(vtkOpenGLState* state);
+  ~vtkIceCullingSaver();
+  void Cull(unsigned int face);
+
+private:
+  vtkOpenGLState* State;
+  int Mode;
+  vtkOpenGLState::ScopedglEnableDisable Enabled;
+
+  vtkIceCullingSaver(const vtkIceCullingSaver&) = delete;
+  void operator=(const vtkIceCullingSaver&) = delete;
+};
 
 class vtkIceBackfaceCulling
 {
 public:
   // Whether no back face of `actor` can be seen in this draw: its input (`closedOutward`,
   // vtkIceSurfaceCheck::Closure) is closed and faces outward, it is drawn opaque as a surface
-  // without clipping planes, culling of its own property or a mirroring transform, all of its
-  // bounds lie beyond the active camera's near plane (the camera is outside it and no front face
-  // is clipped away), and no render pass but vtkIcePass draws it (the ice's sub-passes and
-  // VTK's passes set their own faces).
+  // without clipping planes, culling of its own property or a mirroring
+  // transform, all of its bounds lie beyond the active camera's near plane (the camera is outside
+  // it and no front face is clipped away). The caller checks that no sub-pass draws it (InSubPass).
   static bool BackfacesHidden(
     vtkRenderer* renderer, vtkActor* actor, vtkMapper* mapper, bool closedOutward);
 
@@ -27,13 +47,10 @@ public:
 
   // Culls back faces until End, restoring the OpenGL state then.
   void Begin(vtkRenderer* renderer);
-  void End();
-  bool IsActive() const { return this->State != nullptr; }
+  void End() { this->Saved.reset(); }
 
 private:
-  vtkOpenGLState* State = nullptr;
-  bool WasEnabled = false;
-  int WasMode = 0;
+  std::unique_ptr<vtkIceCullingSaver> Saved;
 };
 
 #endif

@@ -93,8 +93,7 @@ void vtkIceScreenTarget::Cull(unsigned int face)
 {
   if (this->Active)
   {
-    this->Active->State->vtkglCullFace(face);
-    this->Active->State->vtkglEnable(GL_CULL_FACE);
+    this->Active->Culling.Cull(face);
   }
 }
 
@@ -115,11 +114,10 @@ vtkIceScreenTarget::Drawing::Drawing(
   vtkIceScreenTarget& target, const vtkRenderState* s, int components)
   : State(StateOf(s->GetRenderer()))
   , Target(target)
-  , CullMode(GL_BACK)
+  , Culling(this->State)
   , Viewport(this->State)
   , Scissor(this->State)
   , ScissorTest(this->State, GL_SCISSOR_TEST)
-  , CullFace(this->State, GL_CULL_FACE)
   , ClearColorSaver(this->State)
   , ColorMask(this->State)
   , DepthMask(this->State)
@@ -142,14 +140,12 @@ vtkIceScreenTarget::Drawing::Drawing(
   vtkIceScreenRegion::Covered(s, width, height, this->Covered);
   ::Scissor(this->State, this->Covered);
   this->State->vtkglEnable(GL_SCISSOR_TEST);
-  this->State->vtkglGetIntegerv(GL_CULL_FACE_MODE, &this->CullMode);
   target.Active = this;
 }
 
 vtkIceScreenTarget::Drawing::~Drawing()
 {
   this->Target.Active = nullptr;
-  this->State->vtkglCullFace(static_cast<unsigned int>(this->CullMode));
   this->Target.Unbind(this->State);
 }
 

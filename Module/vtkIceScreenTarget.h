@@ -5,8 +5,9 @@
 #ifndef vtkIceScreenTarget_h
 #define vtkIceScreenTarget_h
 
-#include "vtkIceScreenRegion.h" // for Tracker
-#include "vtkOpenGLState.h"     // for Drawing
+#include "vtkIceBackfaceCulling.h" // for vtkIceCullingSaver
+#include "vtkIceScreenRegion.h"    // for Tracker
+#include "vtkOpenGLState.h"        // for Drawing
 #include "vtkSmartPointer.h"
 
 class vtkOpenGLFramebufferObject;
@@ -60,11 +61,10 @@ public:
     friend class vtkIceScreenTarget;
     vtkIceScreenTarget& Target;
     int Covered[4];
-    int CullMode;
+    vtkIceCullingSaver Culling;
     vtkOpenGLState::ScopedglViewport Viewport;
     vtkOpenGLState::ScopedglScissor Scissor;
     vtkOpenGLState::ScopedglEnableDisable ScissorTest;
-    vtkOpenGLState::ScopedglEnableDisable CullFace;
     vtkOpenGLState::ScopedglClearColor ClearColorSaver;
     vtkOpenGLState::ScopedglColorMask ColorMask;
     vtkOpenGLState::ScopedglDepthMask DepthMask;
