@@ -20,7 +20,9 @@ bool vtkIceBackfaceCulling::BackfacesHidden(
   vtkRenderer* renderer, vtkActor* actor, vtkMapper* mapper, bool closedOutward)
 {
   vtkProperty* property = actor->GetProperty();
+  // Edges and vertices of back faces show along the silhouette (lines and points have a width).
   if (!closedOutward || property->GetRepresentation() != VTK_SURFACE ||
+    property->GetEdgeVisibility() || property->GetVertexVisibility() ||
     property->GetOpacity() < 1.0 || property->GetBackfaceCulling() ||
     property->GetFrontfaceCulling() || mapper->GetNumberOfClippingPlanes() > 0 ||
     actor->GetMatrix()->Determinant() <= 0.0)

@@ -36,7 +36,7 @@ class vtkIceBackfaceCulling
 public:
   // Whether no back face of `actor` can be seen in this draw: its input (`closedOutward`,
   // vtkIceSurfaceCheck::Closure) is closed and faces outward, it is drawn opaque as a surface
-  // without clipping planes, culling of its own property or a mirroring
+  // without edges or vertices shown, clipping planes, culling of its own property or a mirroring
   // transform, all of its bounds lie beyond the active camera's near plane (the camera is outside
   // it and no front face is clipped away). The caller checks that no sub-pass draws it (InSubPass).
   static bool BackfacesHidden(

@@ -138,11 +138,11 @@ public:
   /**
    * Whether the ice skips its back faces in a draw where none of them can be seen (default on):
    * a closed surface whose faces point outward (checked once per input, from its second frame:
-   * an input changed every frame is not checked), opaque, drawn as a surface without clipping
-   * planes, face culling of its own property or a mirroring transform, wholly beyond the camera's
-   * near plane. Such back faces are hidden by the front faces, but a CPU renderer shades many of
-   * them before the depth test hides them; skipping them saves up to a quarter of a frame
-   * (Documentation/performance.md). Off: both sides are drawn, as VTK does.
+   * an input changed every frame is not checked), opaque, drawn as a surface without edges,
+   * vertices, clipping planes, face culling of its own property or a mirroring transform, wholly
+   * beyond the camera's near plane. Such back faces are hidden by the front faces, but a CPU
+   * renderer shades many of them before the depth test hides them; skipping them saves up to a
+   * quarter of a frame (Documentation/performance.md). Off: both sides are drawn, as VTK does.
    */
   vtkSetMacro(CullHiddenBackfaces, bool);
   vtkGetMacro(CullHiddenBackfaces, bool);

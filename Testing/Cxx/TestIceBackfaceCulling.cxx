@@ -4,8 +4,8 @@
 // - Every case where a back face can be seen, or where the input does not say which side is
 //   outside, draws both sides: the camera inside the ice, a clipping plane, an open surface (the
 //   teapot), faces turned inward, one face turned against its neighbours, a mirroring transform,
-//   wireframe, translucent; the user's own BackfaceCulling is VTK's to do. Where culling would
-//   be wrong, the pictures with it on and off would differ: they are compared too.
+//   wireframe, edges shown, translucent; the user's own BackfaceCulling is VTK's to do. Where
+//   culling would be wrong, the pictures with it on and off would differ: they are compared too.
 // - The input's closure is checked from its second frame: an input modified every frame is not.
 #include "IceTestUtilities.h"
 #include "vtkIceMapper.h"
@@ -193,6 +193,10 @@ int TestIceBackfaceCulling(int, char*[])
   scene.Ice->GetProperty()->SetRepresentationToWireframe();
   ok = Check(scene, false, "wireframe") && ok;
   scene.Ice->GetProperty()->SetRepresentationToSurface();
+  scene.Ice->GetProperty()->EdgeVisibilityOn();
+  scene.Ice->GetProperty()->SetEdgeColor(1.0, 0.3, 0.0);
+  ok = Check(scene, false, "edges shown") && ok;
+  scene.Ice->GetProperty()->EdgeVisibilityOff();
   scene.Ice->GetProperty()->SetOpacity(0.5);
   ok = Check(scene, false, "translucent actor") && ok;
   scene.Ice->GetProperty()->SetOpacity(1.0);
