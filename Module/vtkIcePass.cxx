@@ -75,6 +75,26 @@ vtkPropCollection* PickFromProps(vtkRenderer* renderer)
 {
   return renderer->*vtkIcePickListAccess::Member();
 }
+
+// The sub-passes draw the ice with outputs of their own: the surface's optics would be dead code
+// in their programs, which NVIDIA's driver still compiled with the textures' samplers active
+// (Mesa drops them).
+bool DrawnByIceSubPass(vtkProp* prop)
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  const int passes = keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())
+    ? keys->Length(vtkOpenGLRenderPass::RenderPasses())
+    : 0;
+  for (int i = 0; i < passes; ++i)
+  {
+    vtkObjectBase* pass = keys->Get(vtkOpenGLRenderPass::RenderPasses(), i);
+    if (vtkIceDepthIntervalPass::SafeDownCast(pass) || vtkIceBackfaceNormalPass::SafeDownCast(pass))
+    {
+      return true;
+    }
+  }
+  return false;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -326,14 +346,14 @@ vtkTextureObject* vtkIcePass::GetCubeMapOf(vtkProp* prop)
 
 //------------------------------------------------------------------------------
 bool vtkIcePass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fs, vtkAbstractMapper* abstractMapper, vtkProp*)
+  std::string&, std::string&, std::string& fs, vtkAbstractMapper* abstractMapper, vtkProp* prop)
 {
   // The surface's hooks for the parts that sample this pass's textures, filled when the texture
   // is ready (not while a sub-pass renders it) and the ice needs it. What is ready in a stage is
   // the same every frame, and a change of needs modifies the mapper: the program is rebuilt
   // whenever this answer changes.
   vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(abstractMapper);
-  if (!mapper)
+  if (!mapper || DrawnByIceSubPass(prop))
   {
     return true;
   }

@@ -15,10 +15,14 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkNew.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
@@ -193,6 +197,8 @@ bool PassHoldsTheFrame()
     int Binds = 0;
     int WithPass = 0;
     int SamplingBackNormals = 0;
+    int SubPassDeclaring = 0; // sub-pass programs whose source names the pass's back normals
+    std::string Log;          // every bind, printed when the count is wrong
   } seen{ scene.Ice, scene.Pass };
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&seen);
@@ -200,18 +206,44 @@ bool PassHoldsTheFrame()
     auto* observation = static_cast<Observation*>(clientData);
     ++observation->Binds;
     observation->WithPass += vtkIcePass::GetIcePassOf(observation->Ice) == observation->Pass;
-    observation->SamplingBackNormals +=
-      static_cast<vtkShaderProgram*>(callData)->IsUniformUsed("iceBackNormals");
+    auto* program = static_cast<vtkShaderProgram*>(callData);
+    const bool sampling = program->IsUniformUsed("iceBackNormals");
+    observation->SamplingBackNormals += sampling;
+    std::string passes;
+    bool subPass = false;
+    vtkInformation* keys = observation->Ice->GetPropertyKeys();
+    for (int i = 0; keys && i < vtkOpenGLRenderPass::RenderPasses()->Length(keys); ++i)
+    {
+      vtkObjectBase* pass = vtkOpenGLRenderPass::RenderPasses()->Get(keys, i);
+      passes += std::string(" ") + pass->GetClassName();
+      subPass = subPass || !vtkIcePass::SafeDownCast(pass);
+    }
+    // The source, not only the active uniforms: Mesa drops a sampler whose result is unused,
+    // NVIDIA's driver kept it (the depth-interval program sampled the back normals there).
+    const bool declaring =
+      program->GetFragmentShader()->GetSource().find("iceBackNormals") != std::string::npos;
+    observation->SubPassDeclaring += subPass && declaring;
+    observation->Log += "     program " + std::to_string(program->GetHandle()) +
+      (sampling ? " samples iceBackNormals" : (declaring ? " names iceBackNormals" : "")) +
+      "; passes:" + passes + "\n";
   });
   scene.Mapper->AddObserver(vtkCommand::UpdateShaderEvent, observer);
   scene.Window->Render();
   bool ok = Expect(seen.Binds > 0 && seen.WithPass == seen.Binds,
     "every ice program bound in the frame sees the pass among the prop's render passes (" +
       std::to_string(seen.WithPass) + " of " + std::to_string(seen.Binds) + ")");
+  if (seen.SamplingBackNormals != 1 || seen.SubPassDeclaring != 0)
+  {
+    std::cout << seen.Log;
+  }
   ok = Expect(seen.SamplingBackNormals == 1,
          "the pass built its back-face sampling into the surface program drawn in the scene "
          "(not into the programs of its own sub-passes): " +
            std::to_string(seen.SamplingBackNormals) + " bound") &&
+    ok;
+  ok = Expect(seen.SubPassDeclaring == 0,
+         "no program of a sub-pass carries the surface's back-face sampling (" +
+           std::to_string(seen.SubPassDeclaring) + " bound)") &&
     ok;
   ok = Expect(vtkIcePass::GetIcePassOf(scene.Ice) == nullptr,
          "after the frame the prop has no ice pass among its render passes") &&
