@@ -1,5 +1,6 @@
 #include "vtkIceWorldSpaceMapper.h"
 
+#include "vtkIceEdgesGS.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceSmoothNormals.h"
 #include "vtkIceSurfaceCheck.h"
@@ -187,11 +188,16 @@ void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vt
   // VTK adds a geometry shader for edges (EdgeVisibility) and wide lines; its shader cache then
   // renames "VSOut" to "GSOut" in the fragment shader. Every ice varying (VTK's convention:
   // out TYPE iceNameVSOutput in the vertex shader) is copied through it per vertex, as VTK does
-  // for its own.
+  // for its own; where VTK grows the triangles for their edges, the grown corners take the
+  // triangle's values there instead (vtkIceEdgesGS.glsl).
   if (!gs || gs->GetSource().empty())
   {
     return;
   }
+  std::string source = gs->GetSource();
+  static const std::string grow = "gl_Position.xy = gl_Position.xy + offsets[i]*gl_Position.w;";
+  const bool grown = source.find(grow) != std::string::npos &&
+    source.find("//VTK::Edges::Dec") != std::string::npos;
   std::string declarations;
   std::string copies;
   static const std::regex varying("out\\s+(\\w+)\\s+(ice\\w*)VSOutput\\s*;");
@@ -199,11 +205,20 @@ void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vt
   {
     const std::string type = (*it)[1];
     const std::string name = (*it)[2];
-    declarations +=
-      "in " + type + " " + name + "VSOutput[];\nout " + type + " " + name + "GSOutput;\n";
-    copies += name + "GSOutput = " + name + "VSOutput[i];\n";
+    const std::string in = name + "VSOutput";
+    declarations += "in " + type + " " + in + "[];\nout " + type + " " + name + "GSOutput;\n";
+    copies += name + "GSOutput = " +
+      (grown ? "iceWeights.x * " + in + "[0] + iceWeights.y * " + in + "[1] + iceWeights.z * " +
+            in + "[2];\n"
+             : in + "[i];\n");
   }
-  std::string source = gs->GetSource();
+  if (grown)
+  {
+    using vtkIceShaderSections::Get;
+    vtkIceShaderSections::InsertAfterTag(source, "//VTK::Edges::Dec", Get(vtkIceEdgesGS, "Dec"));
+    copies = Get(vtkIceEdgesGS, "Impl") + copies;
+    vtkShaderProgram::Substitute(source, grow, grow + "\n" + Get(vtkIceEdgesGS, "Position"));
+  }
   vtkIceShaderSections::InsertAfterTag(source, "//VTK::Normal::Dec", declarations);
   vtkIceShaderSections::InsertAfterTag(source, "//VTK::Normal::Impl", copies);
   gs->SetSource(source);
