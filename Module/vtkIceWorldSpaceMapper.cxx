@@ -196,8 +196,8 @@ void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vt
   }
   std::string source = gs->GetSource();
   static const std::string grow = "gl_Position.xy = gl_Position.xy + offsets[i]*gl_Position.w;";
-  const bool grown = source.find(grow) != std::string::npos &&
-    source.find("//VTK::Edges::Dec") != std::string::npos;
+  const bool grown =
+    source.find(grow) != std::string::npos && source.find("//VTK::Edges::Dec") != std::string::npos;
   std::string declarations;
   std::string copies;
   static const std::regex varying("out\\s+(\\w+)\\s+(ice\\w*)VSOutput\\s*;");
