@@ -18,8 +18,8 @@
  * vtkIcePass also draws the ice's cracks (NumberOfCracks generic crack surfaces placed at random
  * inside, showing only their specular highlights), clipped to the ice either per fragment by its
  * depth interval or once on the CPU (CrackClipping), and its air: NumberOfAirPlanes planes of
- * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: the paper's
- * passes, or in the ice's own fragment shader along the view ray. BumpStrength and BumpScale make
+ * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: in the ice's
+ * own fragment shader along the view ray (default), or the paper's passes. BumpStrength and BumpScale make
  * the surface bumpy. Air, cracks and bumps are on by default (the paper's full look); set them to 0
  * for clean optics.
  *
@@ -363,14 +363,14 @@ public:
   ///@{
   /**
    * How the cracks and air inside the ice are rendered (both need vtkIcePass).
-   * InteriorPaperPasses (default): the paper's method: the ice's depth interval is rendered,
+   * InteriorSinglePass (default): the ice's fragment shader intersects the view ray, from the
+   * front surface to the nearest back face (whose depth the back-face pass stores), with every
+   * crack sheet and air plane and composites them there: no depth-interval pass, no crack or air
+   * draw call. InteriorPaperPasses: the paper's method: the ice's depth interval is rendered,
    * then the air planes (blended, back to front) and the crack sheets (their highlights added)
-   * are drawn over it. InteriorSinglePass: the ice's fragment shader intersects the view ray,
-   * from the front surface to the nearest back face (whose depth the back-face pass stores), with
-   * every crack sheet and air plane and composites them there: no depth-interval pass, no crack
-   * or air draw call, but every crack and plane is evaluated for every ice pixel. On llvmpipe
-   * the paper's passes are faster at the default look (Documentation/performance.md); the
-   * single pass is the candidate for GPUs. DebugCracksUnclipped always uses the paper's passes.
+   * are drawn over it. On a GPU the single pass is the faster one at the default look (an
+   * NVIDIA H200, VTK's default window: 2-42 % less frame time); on llvmpipe the paper's passes
+   * are (30-48 % less): Documentation/performance.md. DebugCracksUnclipped always uses the paper's passes.
    */
   vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorSinglePass);
   vtkGetMacro(InteriorMethod, int);
@@ -479,7 +479,7 @@ protected:
   double IceColor[3];
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
-  int InteriorMethod = InteriorPaperPasses;
+  int InteriorMethod = InteriorSinglePass;
   int NumberOfCracks = 2;
   int CrackSeed = 1;
   double CrackIntensity = 1.0;

@@ -129,6 +129,7 @@ bool DepthIntervalOnlyWhenRead()
   ok =
     Expect(passesPerFrame() == 0, "no cracks, no air, no debug view: no depth-interval pass") && ok;
   scene.Mapper->SetNumberOfAirPlanes(19);
+  scene.Mapper->SetInteriorMethodToPaperPasses();
   ok =
     Expect(passesPerFrame() == 2, "air in the paper's passes: the depth-interval pass runs") && ok;
   scene.Mapper->SetInteriorMethodToSinglePass();

@@ -109,9 +109,9 @@ int TestIceViewer(int, char*[])
     { '2', "exit point",
       [&] { return mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint; },
       "method: exit-point" },
-    { 'i', "single pass",
-      [&] { return mapper->GetInteriorMethod() == vtkIceMapper::InteriorSinglePass; },
-      "interior method: single-pass" },
+    { 'i', "paper passes",
+      [&] { return mapper->GetInteriorMethod() == vtkIceMapper::InteriorPaperPasses; },
+      "interior method: paper-passes" },
     { 'c', "cracks off", [&] { return mapper->GetNumberOfCracks() == 0; }, "cracks on/off: 0" },
     { 'c', "cracks back", [&] { return mapper->GetNumberOfCracks() == 2; }, "cracks on/off: 2" },
     // The third crack of this seed lies where the milky air hides it at this size: 2 pixels

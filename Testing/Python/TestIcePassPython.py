@@ -71,18 +71,18 @@ def main():
     assert changed >= 6.0, "two-sided refraction must change the ice"
     assert restored == 0.0, "TwoSidedRefractionOff must give the one-sided image"
 
-    # The interior methods from Python: cracks and air by the paper's passes (default) or in the
-    # ice's own shader; both change the ice, and differently.
+    # The interior methods from Python: cracks and air in the ice's own shader (default) or by the
+    # paper's passes; both change the ice, and differently.
     mapper.TwoSidedRefractionOn()
-    assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses
+    assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass
     mapper.SetNumberOfCracks(2)
     mapper.SetNumberOfAirPlanes(19)
-    paper = grab(window)
-    mapper.SetInteriorMethodToSinglePass()
-    assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass
     single = grab(window)
     mapper.SetInteriorMethodToPaperPasses()
     assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses
+    paper = grab(window)
+    mapper.SetInteriorMethodToSinglePass()
+    assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass
     interior = (mean_difference(two_sided, paper, *box), mean_difference(two_sided, single, *box),
                 mean_difference(paper, single, *box))
     print("interior: paper passes %.2f/255, single pass %.2f/255 from the clear ice, %.2f/255 apart"

@@ -72,7 +72,7 @@ def options_change_the_picture():
         ([], ["--two-sided-method", "exit-point"], True),
         ([], ["--back-normal-weight", "0.8"], True),
         ([], ["--cracks", "0"], True),
-        ([], ["--interior", "single-pass"], True),
+        ([], ["--interior", "paper-passes"], True),
         (["--cracks", "6"], ["--crack-seed", "9"], True),
         (["--cracks", "6"], ["--crack-intensity", "4"], True),
         (["--cracks", "6"], ["--cracks-in-refraction"], True),
