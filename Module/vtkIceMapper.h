@@ -369,7 +369,7 @@ public:
    * draw call. InteriorPaperPasses: the paper's method: the ice's depth interval is rendered,
    * then the air planes (blended, back to front) and the crack sheets (their highlights added)
    * are drawn over it. On a GPU the single pass is the faster one at the default look (an
-   * NVIDIA H200, VTK's default window: 2-42 % less frame time); on llvmpipe the paper's passes
+   * NVIDIA H200, VTK's default window: 2-43 % less frame time); on llvmpipe the paper's passes
    * are (30-48 % less): Documentation/performance.md. DebugCracksUnclipped always uses the paper's passes.
    */
   vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorSinglePass);
