@@ -132,8 +132,10 @@ std::vector<Group> DefineGroups()
     g.Title = std::string("sphere of ") + size + " triangles, static environment, about 1/5";
     g.Object = std::string("sphere-") + size;
     g.Quick = std::string(size) == "1k" || std::string(size) == "10k";
+    // The full look too: at the same coverage, whether its cost follows the triangles.
     g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
-      Ice("two-sided ice", Material::TwoSided) };
+      Ice("two-sided ice", Material::TwoSided), Ice("full look, single pass", Material::FullLook),
+      Ice("full look, paper passes", Material::FullLook, 2, true) };
     groups.push_back(g);
   }
   return groups;
