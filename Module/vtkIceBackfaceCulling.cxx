@@ -1,14 +1,13 @@
 #include "vtkIceBackfaceCulling.h"
 
 #include "vtkIcePass.h"
+#include "vtkIceRenderPasses.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkInformation.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
-#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProperty.h"
@@ -58,18 +57,9 @@ bool vtkIceBackfaceCulling::BackfacesHidden(
 //------------------------------------------------------------------------------
 bool vtkIceBackfaceCulling::InSubPass(vtkActor* actor)
 {
-  vtkInformation* keys = actor->GetPropertyKeys();
-  const int passes = keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())
-    ? keys->Length(vtkOpenGLRenderPass::RenderPasses())
-    : 0;
-  for (int i = 0; i < passes; ++i)
-  {
-    if (!vtkIcePass::SafeDownCast(keys->Get(vtkOpenGLRenderPass::RenderPasses(), i)))
-    {
-      return true;
-    }
-  }
-  return false;
+  return vtkIceRenderPasses::Find(actor, [](vtkObjectBase* pass) {
+    return vtkIcePass::SafeDownCast(pass) == nullptr;
+  }) != nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -19,9 +19,9 @@
  * inside, showing only their specular highlights), clipped to the ice either per fragment by its
  * depth interval or once on the CPU (CrackClipping), and its air: NumberOfAirPlanes planes of
  * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: in the ice's
- * own fragment shader along the view ray (default), or the paper's passes. BumpStrength and BumpScale make
- * the surface bumpy. Air, cracks and bumps are on by default (the paper's full look); set them to 0
- * for clean optics.
+ * own fragment shader along the view ray (default), or the paper's passes. BumpStrength and
+ * BumpScale make the surface bumpy. Air, cracks and bumps are on by default (the paper's full
+ * look); set them to 0 for clean optics.
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn. Flat
@@ -370,7 +370,8 @@ public:
    * then the air planes (blended, back to front) and the crack sheets (their highlights added)
    * are drawn over it. On a GPU the single pass is the faster one at the default look (an
    * NVIDIA H200, VTK's default window: 2-43 % less frame time); on llvmpipe the paper's passes
-   * are (30-48 % less): Documentation/performance.md. DebugCracksUnclipped always uses the paper's passes.
+   * are (30-48 % less): Documentation/performance.md. DebugCracksUnclipped always uses the paper's
+   * passes.
    */
   vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorSinglePass);
   vtkGetMacro(InteriorMethod, int);

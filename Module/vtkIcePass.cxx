@@ -7,6 +7,7 @@
 #include "vtkIceExitPointFS.h"
 #include "vtkIceFrameTextures.h"
 #include "vtkIceMapper.h"
+#include "vtkIceRenderPasses.h"
 #include "vtkIceRendererSteps.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
@@ -81,19 +82,10 @@ vtkPropCollection* PickFromProps(vtkRenderer* renderer)
 // (Mesa drops them).
 bool DrawnByIceSubPass(vtkProp* prop)
 {
-  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  const int passes = keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())
-    ? keys->Length(vtkOpenGLRenderPass::RenderPasses())
-    : 0;
-  for (int i = 0; i < passes; ++i)
-  {
-    vtkObjectBase* pass = keys->Get(vtkOpenGLRenderPass::RenderPasses(), i);
-    if (vtkIceDepthIntervalPass::SafeDownCast(pass) || vtkIceBackfaceNormalPass::SafeDownCast(pass))
-    {
-      return true;
-    }
-  }
-  return false;
+  return vtkIceRenderPasses::Find(prop, [](vtkObjectBase* pass) {
+    return vtkIceDepthIntervalPass::SafeDownCast(pass) ||
+      vtkIceBackfaceNormalPass::SafeDownCast(pass);
+  }) != nullptr;
 }
 }
 
@@ -323,19 +315,8 @@ void vtkIcePass::RenderDepthInterval(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 vtkIcePass* vtkIcePass::GetIcePassOf(vtkProp* prop)
 {
-  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  if (!keys || !keys->Has(vtkOpenGLRenderPass::RenderPasses()))
-  {
-    return nullptr;
-  }
-  for (int i = 0; i < keys->Length(vtkOpenGLRenderPass::RenderPasses()); ++i)
-  {
-    if (auto* pass = vtkIcePass::SafeDownCast(keys->Get(vtkOpenGLRenderPass::RenderPasses(), i)))
-    {
-      return pass;
-    }
-  }
-  return nullptr;
+  return vtkIcePass::SafeDownCast(vtkIceRenderPasses::Find(
+    prop, [](vtkObjectBase* pass) { return vtkIcePass::SafeDownCast(pass) != nullptr; }));
 }
 
 //------------------------------------------------------------------------------
