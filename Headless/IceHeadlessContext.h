@@ -10,6 +10,9 @@ namespace IceHeadless
 {
 namespace Detail
 {
+// A GL loader's lookup of a function by name: eglGetProcAddress, OSMesaGetProcAddress.
+using ProcAddress = void (*(*)(const char*))();
+
 // An OpenGL >= 3.2 core context without a window or default framebuffer: VTK renders into its
 // own framebuffer objects.
 class Context
@@ -21,6 +24,8 @@ public:
   virtual void ReleaseCurrent() = 0;
   // e.g. "EGL device 0 (/dev/dri/renderD128), NVIDIA A100, OpenGL 4.6"
   virtual std::string Describe() const = 0;
+  // Where VTK's GL loader finds the functions of this context (glad, VTK >= 9.4).
+  virtual ProcAddress GetProcAddress() const = 0;
 };
 
 // nullptr and a one-line `error` when the back end cannot give a context.
@@ -37,7 +42,6 @@ bool CheckVersion(std::string& error, std::string& description);
 // glXGetProcAddressARB through libGL (glvnd), which only reaches GLX and EGL contexts. This
 // library defines the same symbols; with `getProcAddress` set they reach OSMesa, with nullptr
 // they forward to glvnd. False (and `error`) when `getProcAddress` lacks one of the functions.
-using ProcAddress = void (*(*)(const char*))();
 bool RouteGLTo(ProcAddress getProcAddress, std::string& error);
 // Whether the process resolves VTK's GL symbols to this library (it must come before libGL and
 // libOpenGL in the global symbol scope, i.e. be linked before VTK).

@@ -124,6 +124,10 @@ public:
     eglMakeCurrent(this->Owner.Handle, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   }
   std::string Describe() const override { return this->Owner.Name + ", " + this->Renderer; }
+  ProcAddress GetProcAddress() const override
+  {
+    return reinterpret_cast<ProcAddress>(&eglGetProcAddress);
+  }
   std::string Renderer;
 
 private:

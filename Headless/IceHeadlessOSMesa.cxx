@@ -113,6 +113,10 @@ public:
   {
     return "OSMesa (" + this->Functions->Path + "), " + this->Renderer;
   }
+  ProcAddress GetProcAddress() const override
+  {
+    return reinterpret_cast<ProcAddress>(this->Functions->GetProcAddress);
+  }
   std::string Renderer;
   std::string RouteError;
 

@@ -4,7 +4,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 vtkStandardNewMacro(vtkIceHeadlessRenderWindow);
 
@@ -81,6 +81,27 @@ void vtkIceHeadlessRenderWindow::OpenGLInit()
   this->Superclass::OpenGLInit();
 }
 
+#if VTKICE_GL_LOADER_GLAD
+namespace
+{
+vtkOpenGLRenderWindow::VTKOpenGLAPIProc LoadFromContext(void* context, const char* name)
+{
+  const auto lookup = static_cast<IceHeadless::Detail::Context*>(context)->GetProcAddress();
+  return reinterpret_cast<vtkOpenGLRenderWindow::VTKOpenGLAPIProc>(lookup(name));
+}
+}
+
+// VTK >= 9.4 loads every GL function (1.1 included) with glad through the loader it is given:
+// the context's own, so no call goes through libGL (GLX) and no routing is needed for OSMesa.
+void vtkIceHeadlessRenderWindow::OpenGLInitContext()
+{
+  if (!this->Initialized && this->Context)
+  {
+    this->SetOpenGLSymbolLoader(&LoadFromContext, this->Context.get());
+  }
+  this->Superclass::OpenGLInitContext();
+}
+#else
 // Debian's GLEW is built for GLX only. glewInit() first loads the GL entry points
 // (glewContextInit, through glXGetProcAddressARB: glvnd's stubs reach the current EGL context,
 // and IceHeadlessGL.cxx sends them to OSMesa) and then runs glxewInit(), which needs a current
@@ -121,6 +142,7 @@ void vtkIceHeadlessRenderWindow::OpenGLInitContext()
   // Initialized: the superclass only records the context creation time.
   this->Superclass::OpenGLInitContext();
 }
+#endif
 
 void vtkIceHeadlessRenderWindow::Finalize()
 {

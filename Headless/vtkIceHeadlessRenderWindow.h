@@ -57,7 +57,7 @@ protected:
   vtkIceHeadlessRenderWindow();
   ~vtkIceHeadlessRenderWindow() override;
 
-  // The one place where VTK Ice deals with Debian's GLX-only GLEW (see the .cxx).
+  // Loads the GL functions from the context: GLEW (VTK < 9.4) or glad (see the .cxx).
   void OpenGLInitContext() override;
 
 private:

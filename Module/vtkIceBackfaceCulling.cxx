@@ -12,7 +12,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 //------------------------------------------------------------------------------
 bool vtkIceBackfaceCulling::BackfacesHidden(

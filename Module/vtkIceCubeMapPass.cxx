@@ -27,7 +27,7 @@
 #include "vtkTexture.h"
 #include "vtkTextureObject.h"
 #include "vtkTransform.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 #include <algorithm>
 #include <functional>

@@ -9,7 +9,7 @@
 #include "vtkPointData.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 namespace
 {

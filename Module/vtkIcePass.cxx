@@ -32,7 +32,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 #include <algorithm>
 #include <array>

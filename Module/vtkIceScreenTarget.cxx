@@ -5,7 +5,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 vtkIceScreenTarget::vtkIceScreenTarget() = default;
 vtkIceScreenTarget::~vtkIceScreenTarget() = default;

@@ -27,7 +27,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 #include <algorithm>
 #include <cmath>

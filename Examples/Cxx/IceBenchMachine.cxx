@@ -5,7 +5,7 @@
 
 #include "vtkRenderWindow.h"
 #include "vtkVersion.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 #include <fstream>
 #include <string>

@@ -9,7 +9,7 @@
 #include "vtkActor.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 #include <algorithm>
 #include <chrono>

@@ -390,7 +390,7 @@ std::string IceBench::WritePlot(
   caption->GetTextProperty()->SetFontSize(14);
   caption->GetTextProperty()->SetColor(0.2, 0.2, 0.2);
   caption->SetDisplayPosition(12, 10);
-  renderer->AddActor2D(caption);
+  renderer->AddViewProp(caption);
 
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;

@@ -5,7 +5,7 @@
 #include "vtkOutputWindow.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
-#include "vtk_glew.h"
+#include "vtkIceVTKCompat.h"
 
 #include <dlfcn.h>
 #include <malloc.h>
@@ -45,6 +45,10 @@ const char* ErrorName(GLenum code)
 using IsTextureFunction = GLboolean (*)(GLuint);
 IsTextureFunction IsTexture()
 {
+#if VTKICE_GL_LOADER_GLAD
+  // glad (VTK >= 9.4): every GL function, 1.1 included, is the pointer VTK loaded for its context.
+  return glIsTexture;
+#else
   using GetProcAddress = void (*(*)(const GLubyte*))();
   static IsTextureFunction function = [] {
     auto get = reinterpret_cast<GetProcAddress>(dlsym(RTLD_DEFAULT, "glXGetProcAddressARB"));
@@ -54,6 +58,7 @@ IsTextureFunction IsTexture()
     return found ? found : &glIsTexture;
   }();
   return function;
+#endif
 }
 
 // The largest name any census has seen: names freed since then may be reused below it.

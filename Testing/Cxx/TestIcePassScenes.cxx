@@ -183,7 +183,7 @@ int TestIcePassScenes(int, char*[])
         overlay->SetMapper(mapper);
         overlay->GetProperty()->SetColor(1.0, 1.0, 0.0);
         overlay->GetProperty()->SetOpacity(0.6);
-        r[0]->AddActor2D(overlay);
+        r[0]->AddViewProp(overlay);
       } },
     { "a volume behind a translucent sphere", volumeScene(false) },
     { "a volume behind a translucent sphere, depth peeling for volumes", volumeScene(true) },
