@@ -1,6 +1,7 @@
 #include "vtkIceEnvironmentReader.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceCubeMapTexture.h"
+#include "vtkIceImageFile.h"
 
 #include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
@@ -12,8 +13,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -21,7 +20,6 @@
 #include <filesystem>
 #include <memory>
 #include <new>
-#include <set>
 #include <string>
 #include <system_error>
 #include <type_traits>
@@ -46,18 +44,6 @@ const Cell HorizontalCrossCells[NumberOfFaces] = { { 2, 1, false }, { 0, 1, fals
   { 1, 0, false }, { 1, 2, false }, { 1, 1, false }, { 3, 1, false } };
 const Cell VerticalCrossCells[NumberOfFaces] = { { 2, 1, false }, { 0, 1, false }, { 1, 0, false },
   { 1, 2, false }, { 1, 1, false }, { 1, 3, true } };
-
-// OpenImageIO's messages may span lines; VTK errors read best on one.
-std::string OneLine(std::string text)
-{
-  text.erase(text.find_last_not_of(" \n") + 1);
-  std::string::size_type newline;
-  while ((newline = text.find('\n')) != std::string::npos)
-  {
-    text.replace(newline, 1, "; ");
-  }
-  return text.empty() ? "unknown error" : text;
-}
 
 std::string Size(int width, int height)
 {
@@ -88,37 +74,25 @@ struct Plan
   bool Float = false;
 };
 
-// Opens `path` for reading. OpenImageIO premultiplies colour by unassociated alpha (PNG, TIFF)
-// by default; the reader drops alpha, so it asks for the colour as stored.
-std::unique_ptr<OIIO::ImageInput> Open(const std::string& path)
-{
-  OIIO::geterror(); // drop any stale message of this thread
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  return OIIO::ImageInput::open(path, &config);
-}
-
 // Opens `path` and reads its header; false and `failure` set if OpenImageIO cannot.
-bool ReadHeader(const std::string& path, OIIO::ImageSpec& spec, Failure& failure)
+bool ReadHeader(const std::string& path, vtkIceImageFile::Header& spec, Failure& failure)
 {
-  auto input = Open(path);
-  if (!input)
+  vtkIceImageFile::Message message;
+  if (vtkIceImageFile::ReadHeader(path.c_str(), spec, message) != vtkIceImageFile::Status::Ok)
   {
-    failure = { "Cannot read environment image '" + path + "': " + OneLine(OIIO::geterror()),
+    failure = { "Cannot read environment image '" + path + "': " + message.Text,
       vtkErrorCode::CannotOpenFileError };
     return false;
   }
-  spec = input->spec();
-  input->close();
-  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0)
+  if (spec.Width <= 0 || spec.Height <= 0 || spec.Depth != 1 || spec.Channels <= 0)
   {
     failure = { "Environment image '" + path + "' is not a 2D image with pixels",
       vtkErrorCode::FileFormatError };
     return false;
   }
-  if (static_cast<long long>(spec.width) * spec.height > MaximumPixels)
+  if (static_cast<long long>(spec.Width) * spec.Height > MaximumPixels)
   {
-    failure = { "Environment image '" + path + "' is " + Size(spec.width, spec.height) +
+    failure = { "Environment image '" + path + "' is " + Size(spec.Width, spec.Height) +
         ", more than the " + std::to_string(MaximumPixels) + " pixels the reader accepts",
       vtkErrorCode::FileFormatError };
     return false;
@@ -126,22 +100,9 @@ bool ReadHeader(const std::string& path, OIIO::ImageSpec& spec, Failure& failure
   return true;
 }
 
-bool IsEightBit(const OIIO::ImageSpec& spec)
-{
-  return spec.format.basetype == OIIO::TypeDesc::UINT8;
-}
-
 // Whether OpenImageIO has a reader for files with extension `ext` (with its dot, any case).
 bool IsImageExtension(std::string ext)
 {
-  static const std::set<std::string> known = [] {
-    std::set<std::string> extensions;
-    for (const auto& format : OIIO::get_extension_map())
-    {
-      extensions.insert(format.second.begin(), format.second.end());
-    }
-    return extensions;
-  }();
   if (ext.size() < 2 || ext[0] != '.')
   {
     return false;
@@ -149,7 +110,7 @@ bool IsImageExtension(std::string ext)
   ext.erase(0, 1);
   std::transform(
     ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return known.count(ext) > 0;
+  return vtkIceImageFile::ReadsExtension(ext.c_str());
 }
 
 // The six face files of a folder: px, nx, ... with an extension OpenImageIO reads, one per face.
@@ -213,35 +174,35 @@ bool MakeFacesPlan(const std::string& folder, Plan& plan, Failure& failure)
   for (int face = 0; face < NumberOfFaces; ++face)
   {
     const std::string& path = plan.Files[face];
-    OIIO::ImageSpec spec;
+    vtkIceImageFile::Header spec;
     if (!ReadHeader(path, spec, failure))
     {
       return false;
     }
-    if (spec.width != spec.height)
+    if (spec.Width != spec.Height)
     {
-      failure = { "Cube face '" + path + "' is " + Size(spec.width, spec.height) + ", not square",
+      failure = { "Cube face '" + path + "' is " + Size(spec.Width, spec.Height) + ", not square",
         vtkErrorCode::FileFormatError };
       return false;
     }
-    if (face > 0 && spec.width != plan.Width)
+    if (face > 0 && spec.Width != plan.Width)
     {
-      failure = { "Cube face '" + path + "' is " + Size(spec.width, spec.height) + " but '" +
+      failure = { "Cube face '" + path + "' is " + Size(spec.Width, spec.Height) + " but '" +
           plan.Files[0] + "' is " + Size(plan.Width, plan.Height) +
           "; all six faces must be of one size",
         vtkErrorCode::FileFormatError };
       return false;
     }
-    if (spec.width > MaximumFaceSize)
+    if (spec.Width > MaximumFaceSize)
     {
-      failure = { "Cube face '" + path + "' is " + Size(spec.width, spec.height) +
+      failure = { "Cube face '" + path + "' is " + Size(spec.Width, spec.Height) +
           ", more than the " + Size(MaximumFaceSize, MaximumFaceSize) + " the reader accepts",
         vtkErrorCode::FileFormatError };
       return false;
     }
-    plan.Width = spec.width;
-    plan.Height = spec.height;
-    plan.Float = plan.Float || !IsEightBit(spec);
+    plan.Width = spec.Width;
+    plan.Height = spec.Height;
+    plan.Float = plan.Float || !spec.EightBit;
   }
   plan.Layout = vtkIceEnvironmentReader::Faces;
   plan.FaceSize = plan.Width;
@@ -250,35 +211,35 @@ bool MakeFacesPlan(const std::string& folder, Plan& plan, Failure& failure)
 
 bool MakeImagePlan(const std::string& path, int faceSize, Plan& plan, Failure& failure)
 {
-  OIIO::ImageSpec spec;
+  vtkIceImageFile::Header spec;
   if (!ReadHeader(path, spec, failure))
   {
     return false;
   }
-  const long long w = spec.width;
-  const long long h = spec.height;
+  const long long w = spec.Width;
+  const long long h = spec.Height;
   plan.Files = { path };
-  plan.Width = spec.width;
-  plan.Height = spec.height;
-  plan.Float = !IsEightBit(spec);
+  plan.Width = spec.Width;
+  plan.Height = spec.Height;
+  plan.Float = !spec.EightBit;
   if (3 * w == 4 * h)
   {
     plan.Layout = vtkIceEnvironmentReader::HorizontalCross;
-    plan.FaceSize = spec.width / 4;
+    plan.FaceSize = spec.Width / 4;
   }
   else if (4 * w == 3 * h)
   {
     plan.Layout = vtkIceEnvironmentReader::VerticalCross;
-    plan.FaceSize = spec.width / 3;
+    plan.FaceSize = spec.Width / 3;
   }
   else if (w == 2 * h)
   {
     plan.Layout = vtkIceEnvironmentReader::Equirectangular;
-    plan.FaceSize = faceSize > 0 ? faceSize : std::max(1, spec.width / 4);
+    plan.FaceSize = faceSize > 0 ? faceSize : std::max(1, spec.Width / 4);
   }
   else
   {
-    failure = { "Environment image '" + path + "' is " + Size(spec.width, spec.height) +
+    failure = { "Environment image '" + path + "' is " + Size(spec.Width, spec.Height) +
         ", which is no cube map layout: expected a 4:3 horizontal cross, a 3:4 vertical cross or "
         "a 2:1 equirectangular panorama",
       vtkErrorCode::FileFormatError };
@@ -342,48 +303,39 @@ struct Raster
 template <typename T>
 bool ReadRGB(const std::string& path, const Plan& plan, Raster<T>& raster, Failure& failure)
 {
-  auto input = Open(path);
-  if (!input)
+  const size_t pixels = static_cast<size_t>(plan.Width) * plan.Height;
+  std::vector<T> rgb(3 * pixels);
+  int channels = 0;
+  vtkIceImageFile::Message message;
+  switch (vtkIceImageFile::ReadPixels(path.c_str(), plan.Width, plan.Height,
+    std::is_same<T, float>::value, rgb.data(), channels, message))
   {
-    failure = { "Cannot read environment image '" + path + "': " + OneLine(OIIO::geterror()),
-      vtkErrorCode::CannotOpenFileError };
-    return false;
+    case vtkIceImageFile::Status::Ok:
+      break;
+    case vtkIceImageFile::Status::CannotOpen:
+      failure = { "Cannot read environment image '" + path + "': " + message.Text,
+        vtkErrorCode::CannotOpenFileError };
+      return false;
+    case vtkIceImageFile::Status::Changed:
+      failure = { "Environment image '" + path + "' changed while it was read",
+        vtkErrorCode::FileFormatError };
+      return false;
+    case vtkIceImageFile::Status::CannotRead:
+      failure = { "Cannot read the pixels of environment image '" + path + "': " + message.Text,
+        vtkErrorCode::PrematureEndOfFileError };
+      return false;
   }
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.width != plan.Width || spec.height != plan.Height || spec.depth != 1)
+  if (channels == 1)
   {
-    failure = { "Environment image '" + path + "' changed while it was read",
-      vtkErrorCode::FileFormatError };
-    return false;
-  }
-  // Colour images give their first three channels, grey ones (with or without alpha) their first.
-  const int channels = spec.nchannels >= 3 ? 3 : 1;
-  const size_t pixels = static_cast<size_t>(spec.width) * spec.height;
-  std::vector<T> buffer(pixels * channels);
-  const OIIO::TypeDesc type =
-    std::is_same<T, float>::value ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  if (!input->read_image(0, 0, 0, channels, type, buffer.data()))
-  {
-    failure = { "Cannot read the pixels of environment image '" + path +
-        "': " + OneLine(input->geterror()),
-      vtkErrorCode::PrematureEndOfFileError };
-    return false;
-  }
-  input->close();
-  raster.Width = spec.width;
-  raster.Height = spec.height;
-  if (channels == 3)
-  {
-    raster.RGB.swap(buffer);
-  }
-  else
-  {
-    raster.RGB.resize(3 * pixels);
-    for (size_t p = 0; p < pixels; ++p)
+    // Grey: spread each value over three channels, from the last pixel back.
+    for (size_t p = pixels; p-- > 0;)
     {
-      raster.RGB[3 * p] = raster.RGB[3 * p + 1] = raster.RGB[3 * p + 2] = buffer[p];
+      rgb[3 * p] = rgb[3 * p + 1] = rgb[3 * p + 2] = rgb[p];
     }
   }
+  raster.Width = plan.Width;
+  raster.Height = plan.Height;
+  raster.RGB.swap(rgb);
   return true;
 }
 

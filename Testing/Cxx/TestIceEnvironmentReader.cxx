@@ -7,6 +7,7 @@
 // a texture fed by the reader is rendered. Finally the faces read back, as a texture, must render
 // a skybox pixel-equal to vtkIceCubeMapSource's and pass the ice invisibility check, and the float
 // faces of an EXR panorama must render a skybox within 1/255 of it.
+#include "IceTestImageWriter.h"
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceEnvironmentReader.h"
@@ -26,8 +27,6 @@
 #include "vtkTesting.h"
 #include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
-
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,20 +50,10 @@ bool Report(bool ok, const std::string& what)
   return ok;
 }
 
-bool WriteImage(const std::string& path, int width, int height, int channels, OIIO::TypeDesc type,
-  const void* pixels)
+bool WriteImage(
+  const std::string& path, int width, int height, int channels, bool asFloat, const void* pixels)
 {
-  auto out = OIIO::ImageOutput::create(path);
-  OIIO::ImageSpec spec(width, height, channels, type);
-  // Colour as given, not divided by alpha on the way into a PNG.
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  const bool ok = out && out->open(path, spec) && out->write_image(type, pixels) && out->close();
-  if (!ok)
-  {
-    std::cerr << "cannot write " << path << ": " << (out ? out->geterror() : OIIO::geterror())
-              << "\n";
-  }
-  return ok;
+  return IceTest::WriteImage(path.c_str(), width, height, channels, asFloat, pixels);
 }
 
 // The six DirectionTest faces of vtkIceCubeMapSource (RGB, row 0 first).
@@ -102,8 +91,8 @@ bool WriteFaces(const Faces& faces, const std::string& folder)
   bool ok = true;
   for (int face = 0; face < 6; ++face)
   {
-    ok = WriteImage(folder + "/" + FaceNames[face] + ".png", faces.Size, faces.Size, 3,
-           OIIO::TypeDesc::UINT8, faces.RGB[face].data()) &&
+    ok = WriteImage(folder + "/" + FaceNames[face] + ".png", faces.Size, faces.Size, 3, false,
+           faces.RGB[face].data()) &&
       ok;
   }
   return ok;
@@ -464,9 +453,7 @@ int TestIceEnvironmentReader(int argc, char* argv[])
            std::to_string(verticalPairs) + " face-to-face pixel pairs within 1.5 texels)") &&
     ok;
   const std::vector<unsigned char> horizontal = MakeCross(faces, HorizontalCross, 4, 3, 3);
-  ok = WriteImage(
-         temp + "/hcross.png", 4 * size, 3 * size, 3, OIIO::TypeDesc::UINT8, horizontal.data()) &&
-    ok;
+  ok = WriteImage(temp + "/hcross.png", 4 * size, 3 * size, 3, false, horizontal.data()) && ok;
   if (ReadAs(reader, temp + "/hcross.png", vtkIceEnvironmentReader::HorizontalCross, size,
         VTK_UNSIGNED_CHAR, "horizontal cross PNG"))
   {
@@ -477,9 +464,7 @@ int TestIceEnvironmentReader(int argc, char* argv[])
     ok = false;
   }
   const std::vector<unsigned char> vertical = MakeCross(faces, VerticalCross, 3, 4, 4);
-  ok = WriteImage(
-         temp + "/vcross.png", 3 * size, 4 * size, 4, OIIO::TypeDesc::UINT8, vertical.data()) &&
-    ok;
+  ok = WriteImage(temp + "/vcross.png", 3 * size, 4 * size, 4, false, vertical.data()) && ok;
   if (ReadAs(reader, temp + "/vcross.png", vtkIceEnvironmentReader::VerticalCross, size,
         VTK_UNSIGNED_CHAR, "vertical cross RGBA PNG"))
   {
@@ -494,8 +479,8 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   ok = CheckPanoramaConvention() && ok;
   const int panoramaWidth = 512;
   const std::vector<float> panorama = MakePanorama(panoramaWidth, panoramaWidth / 2, PanoramaScale);
-  ok = WriteImage(temp + "/panorama.exr", panoramaWidth, panoramaWidth / 2, 3,
-         OIIO::TypeDesc::FLOAT, panorama.data()) &&
+  ok = WriteImage(
+         temp + "/panorama.exr", panoramaWidth, panoramaWidth / 2, 3, true, panorama.data()) &&
     ok;
   if (ReadAs(reader, temp + "/panorama.exr", vtkIceEnvironmentReader::Equirectangular,
         panoramaWidth / 4, VTK_FLOAT, "EXR panorama"))
@@ -525,9 +510,8 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   {
     grey[p] = static_cast<unsigned char>(std::lround(255.0 * panorama[3 * p] / PanoramaScale));
   }
-  ok = WriteImage(temp + "/grey.png", panoramaWidth, panoramaWidth / 2, 1, OIIO::TypeDesc::UINT8,
-         grey.data()) &&
-    ok;
+  ok =
+    WriteImage(temp + "/grey.png", panoramaWidth, panoramaWidth / 2, 1, false, grey.data()) && ok;
   if (ReadAs(reader, temp + "/grey.png", vtkIceEnvironmentReader::Equirectangular,
         panoramaWidth / 4, VTK_UNSIGNED_CHAR, "grey PNG panorama"))
   {
@@ -564,10 +548,10 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   fs::copy_file(temp + "/faces/px.png", bad + "/two-px/px.jpg");
   fs::copy(temp + "/faces", bad + "/not-square");
   const std::vector<unsigned char> wide(3 * 64 * 48, 128);
-  ok = WriteImage(bad + "/not-square/py.png", 64, 48, 3, OIIO::TypeDesc::UINT8, wide.data()) && ok;
+  ok = WriteImage(bad + "/not-square/py.png", 64, 48, 3, false, wide.data()) && ok;
   fs::copy(temp + "/faces", bad + "/sizes");
-  ok = WriteImage(bad + "/sizes/nz.png", 32, 32, 3, OIIO::TypeDesc::UINT8, wide.data()) && ok;
-  ok = WriteImage(bad + "/square.png", 48, 48, 3, OIIO::TypeDesc::UINT8, wide.data()) && ok;
+  ok = WriteImage(bad + "/sizes/nz.png", 32, 32, 3, false, wide.data()) && ok;
+  ok = WriteImage(bad + "/square.png", 48, 48, 3, false, wide.data()) && ok;
 
   ReadAs(reader, temp + "/faces", vtkIceEnvironmentReader::Faces, size, VTK_UNSIGNED_CHAR,
     "six PNG faces again before the bad input");
@@ -609,9 +593,7 @@ int TestIceEnvironmentReader(int argc, char* argv[])
   // Float faces are uploaded as colours too: the skybox of an EXR panorama of the pattern (scale
   // 1) matches vtkIceCubeMapSource's within the panorama's resampling error.
   const std::vector<float> unitPanorama = MakePanorama(1024, 512, 1.0);
-  ok = WriteImage(
-         temp + "/unit-panorama.exr", 1024, 512, 3, OIIO::TypeDesc::FLOAT, unitPanorama.data()) &&
-    ok;
+  ok = WriteImage(temp + "/unit-panorama.exr", 1024, 512, 3, true, unitPanorama.data()) && ok;
   vtkNew<vtkIceEnvironmentReader> floatReader;
   floatReader->SetFileName((temp + "/unit-panorama.exr").c_str());
   floatReader->SetFaceSize(renderSize);
