@@ -1,4 +1,5 @@
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceVTKCompat.h"
 #include "vtkIceCubeMapTexture.h"
 
 #include "vtkDataArray.h"
@@ -163,6 +164,9 @@ void vtkIceCubeMapSource::TexelDirection(int face, int i, int j, int size, doubl
       dir[2] = -1.0;
       break;
   }
+  // The faces hold the world as this VTK's skybox and environment lookups show it, so a pattern
+  // (and a panorama read into faces) looks the same in every VTK version.
+  vtkIceVTKCompat::CubeMapTexelToWorld(dir);
 }
 
 //------------------------------------------------------------------------------

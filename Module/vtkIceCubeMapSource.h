@@ -57,8 +57,9 @@ public:
   void Evaluate(const double dir[3], double rgb[3]) const;
 
   /**
-   * The world direction through the centre of texel (i, j) of `face` (0..5, +X -X +Y -Y +Z -Z),
-   * following the OpenGL cube map convention.
+   * The world direction through the centre of texel (i, j) of `face` (0..5, +X -X +Y -Y +Z -Z):
+   * the OpenGL cube map convention's direction as VTK's skybox and environment lookups show it,
+   * which is that direction in VTK 9.1 and the direction with z negated since VTK 9.2.
    */
   static void TexelDirection(int face, int i, int j, int size, double dir[3]);
 
