@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
-#   ./ice.sh test [ctest options]         every test, as CI runs them: the VTK 9.1 stage, then the
-#                                         ParaView stage, then Debian's VTK 9.1 installed again
+#   ./ice.sh test [ctest options]         every test, as CI runs them: the VTK 9.1 stage, the VTK 9.7
+#                                         wheel stage, the ParaView stage, then Debian's VTK 9.1
+#                                         installed again
 #   ./ice.sh test-vtk [ctest options]     the VTK 9.1 stage alone: build, run its tests
+#   ./ice.sh wheel [ctest options]        the wheel stage alone: a venv with the vtk 9.7.0 wheel and
+#                                         PyVista, its SDK, pip install ., every test on VTK 9.7
+#                                         (VTKICE_VTK_SOURCE: VTK 9.7.0's source archive)
+#   ./ice.sh vtk-sdk PREFIX               the SDK of the vtk wheel in VTKICE_PYTHON, made from
+#                                         VTKICE_VTK_SOURCE, for CMAKE_PREFIX_PATH=PREFIX pip install .
 #   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~15 min)
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
@@ -52,6 +58,8 @@ case "$command" in
     # Each stage runs whatever the other did; the machine ends as the VTK 9.1 stage needs it.
     status=0
     "./$(basename "$0")" test-vtk "$@" || status=1
+    echo "== VTK 9.7 wheel stage (./ice.sh wheel)"
+    "./$(basename "$0")" wheel "$@" || status=1
     echo "== ParaView stage (./ice.sh paraview)"
     "./$(basename "$0")" paraview "$@" || status=1
     echo "== Debian's VTK 9.1 again"
@@ -86,6 +94,12 @@ case "$command" in
     xvfb-run -a -s "-screen 0 1280x1400x24 -noreset" \
       ctest --test-dir "$pv_build_dir" --output-on-failure "$@"
     ;;
+  wheel)
+    exec bash .ci/wheel.sh "$@"
+    ;;
+  vtk-sdk)
+    exec bash .ci/vtk-sdk.sh "$@"
+    ;;
   soak)
     build
     exec Testing/Scripts/soak.sh "$@"
@@ -99,7 +113,8 @@ case "$command" in
       "| ./ice.sh test-vtk [ctest options]" \
       "| ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
-      "| ./ice.sh paraview [ctest options]" >&2
+      "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options]" \
+      "| ./ice.sh vtk-sdk PREFIX" >&2
     exit 2
     ;;
 esac
