@@ -1,0 +1,118 @@
+"""Ice in a PyVista plotter.
+
+    import pyvista as pv
+    import vtkice.pyvista
+
+    plotter = pv.Plotter()
+    plotter.set_environment_texture(pv.examples.download_sky_box_cube_map())  # or any cube map
+    vtkice.pyvista.add_ice(plotter, pv.Sphere(), NumberOfCracks=4, Milkiness=0.6)
+    plotter.show()
+
+``add_ice`` draws a mesh with a ``vtkIceMapper`` and puts a ``vtkIcePass`` into the plotter's
+render passes where PyVista's own passes expect the pass that draws the scene: the ice works with
+PyVista's SSAO, depth of field, eye-dome lighting, FXAA and blur, before or after they are
+switched on; with its shadows or SSAA it loses its interior (a warning says so).
+"""
+import re
+import warnings
+
+import pyvista as _pv
+
+from . import vtkIceCubeMapPass, vtkIceMapper, vtkIcePass
+
+__all__ = ["add_ice", "ice_pass"]
+
+
+def _setter(mapper, name):
+    """The mapper's Set method for a look parameter given as 'NumberOfCracks' or 'number_of_cracks'."""
+    camel = name if name[:1].isupper() else "".join(part.title() for part in name.split("_"))
+    method = getattr(mapper, "Set" + camel, None)
+    if method is None:
+        known = sorted(m[3:] for m in dir(mapper) if re.match(r"Set[A-Z]", m) and
+                       hasattr(vtkIceMapper, "Get" + m[3:]) and m not in _NOT_LOOK)
+        raise TypeError("vtkice.pyvista: vtkIceMapper has no parameter %r; its look parameters "
+                        "are %s" % (name, ", ".join(known)))
+    return method
+
+
+# Set methods of the mapper that are not the ice's look.
+_NOT_LOOK = {"SetInputData", "SetInputConnection", "SetInputArrayToProcess", "SetLookupTable",
+             "SetScalarRange", "SetScalarMode", "SetColorMode", "SetArrayName", "SetArrayId",
+             "SetArrayComponent", "SetArrayAccessMode", "SetReferenceCount", "SetDebug",
+             "SetGlobalWarningDisplay", "SetProgressText", "SetProgressObserver"}
+
+
+def ice_pass(plotter):
+    """The plotter's vtkIcePass, put into its render passes the first time it is asked for.
+
+    PyVista draws the scene with the first pass of its pass collection (a vtkRenderStepsPass)
+    inside a camera pass, which its SSAO, depth-of-field, eye-dome-lighting, anti-aliasing and
+    blur passes wrap, and beside which it adds the shadow passes. The ice pass takes that first
+    place (it draws the scene with a vtkRenderStepsPass of its own), so every PyVista pass
+    switched on before or after keeps the ice. PyVista hands the renderer no pass at all when none
+    of its own is on: the ice pass is handed over then. With PyVista's shadows or SSAA the ice
+    loses its interior (the shadow pass draws the surfaces again over it; SSAA renders the scene
+    at another size): a RuntimeWarning says so.
+    """
+    renderer = plotter.renderer
+    existing = getattr(renderer, "_vtkice_pass", None)
+    if existing is not None:
+        return existing
+    passes = renderer._render_passes
+    collection = passes._pass_collection
+    first = collection.GetItemAsObject(0)
+    if first is None or not first.IsA("vtkRenderStepsPass"):
+        raise RuntimeError("vtkice.pyvista: this PyVista's render passes have no vtkRenderStepsPass "
+                           "first (PyVista %s); set the pass yourself: "
+                           "plotter.renderer.SetPass(vtkice.vtkIcePass())" % _pv.__version__)
+    icepass = vtkIcePass()
+    collection.ReplaceItem(0, icepass)
+    update = passes._update_passes
+
+    def update_keeping_ice():
+        update()
+        if renderer.GetPass() is None:
+            renderer.SetPass(passes._camera_pass)
+        lost = [name for name, on in (("shadows", passes._shadow_map_pass is not None),
+                                      ("SSAA anti-aliasing", passes._ssaa_pass is not None)) if on]
+        if lost:
+            warnings.warn("vtkice.pyvista: with PyVista's %s the ice is drawn without its interior "
+                          "(cracks, air): they cannot be combined yet" % " and ".join(lost),
+                          RuntimeWarning, stacklevel=3)
+
+    passes._update_passes = update_keeping_ice
+    renderer._vtkice_pass = icepass
+    update_keeping_ice()
+    return icepass
+
+
+def add_ice(plotter, mesh, name=None, pickable=True, dynamic_environment=False, **look):
+    """Adds `mesh` to `plotter` as ice and returns its actor (a pyvista.Actor).
+
+    `mesh` is any PyVista or VTK data set (its surface is used); `look` sets vtkIceMapper's
+    parameters by name, e.g. ``NumberOfCracks=4`` or ``number_of_cracks=4``,
+    ``IceColor=(0.8, 0.9, 1.0)``, ``TwoSidedRefraction=False``. An unknown name raises TypeError
+    listing the parameters. The ice reflects and refracts the renderer's environment texture
+    (``plotter.renderer.SetEnvironmentTexture``); with ``dynamic_environment=True`` the plotter's
+    ice pass also renders a cube map of the scene around each ice (a vtkIceCubeMapPass), so the
+    plotter's other objects show in the ice.
+    """
+    data = _pv.wrap(mesh)
+    if not isinstance(data, _pv.PolyData):
+        data = data.extract_surface()
+    mapper = vtkIceMapper()
+    mapper.SetInputData(data)
+    for key, value in look.items():
+        setter = _setter(mapper, key)
+        if isinstance(value, (tuple, list)):
+            setter(*value)
+        else:
+            setter(value)
+    actor = _pv.Actor(mapper=mapper)
+    actor.SetPickable(bool(pickable))
+    icepass = ice_pass(plotter)
+    if dynamic_environment and icepass.GetCubeMapPass() is None:
+        icepass.SetCubeMapPass(vtkIceCubeMapPass())
+    plotter.add_actor(actor, name=name, pickable=pickable)
+    return actor
+
