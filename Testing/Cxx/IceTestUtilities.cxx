@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 namespace IceTest
@@ -118,36 +119,51 @@ bool CheckImage(int argc, char* argv[], vtkRenderWindow* window)
 
   vtkNew<vtkTesting> testing;
   testing->AddArguments(argc, argv);
-  vtkNew<vtkPNGReader> reader;
-  reader->SetFileName(testing->GetValidImageFileName());
-  reader->Update();
-  const Image baseline = FromImageData(reader->GetOutput());
   const Image rendered = Capture(window);
-  if (baseline.Width != rendered.Width || baseline.Height != rendered.Height)
+  // The baseline and its alternatives (Name_1.png, Name_2.png, ... as VTK's regression test
+  // accepts them, where a platform draws the scene around the ice differently): the render must
+  // meet the strict bounds against one of them.
+  const std::string valid = testing->GetValidImageFileName();
+  const std::string stem = valid.substr(0, valid.size() - 4);
+  bool ok = false;
+  for (int alternative = 0; !ok; ++alternative)
   {
-    std::cerr << "Baseline is " << baseline.Width << "x" << baseline.Height << ", render is "
-              << rendered.Width << "x" << rendered.Height << "\n";
-    return false;
+    const std::string path =
+      alternative == 0 ? valid : stem + "_" + std::to_string(alternative) + ".png";
+    if (alternative > 0 && !std::filesystem::exists(path))
+    {
+      break;
+    }
+    vtkNew<vtkPNGReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    const Image baseline = FromImageData(reader->GetOutput());
+    if (baseline.Width != rendered.Width || baseline.Height != rendered.Height)
+    {
+      std::cerr << "Baseline " << path << " is " << baseline.Width << "x" << baseline.Height
+                << ", render is " << rendered.Width << "x" << rendered.Height << "\n";
+      continue;
+    }
+    double sum = 0.0;
+    size_t far = 0;
+    const size_t pixels = static_cast<size_t>(rendered.Width) * rendered.Height;
+    for (size_t p = 0; p < pixels; ++p)
+    {
+      const int d = PixelDifference(&baseline.RGB[3 * p], &rendered.RGB[3 * p]);
+      sum += d;
+      far += d > 16 ? 1 : 0;
+    }
+    const double mean = sum / pixels;
+    const double farFraction = static_cast<double>(far) / pixels;
+    std::cout << "Strict baseline comparison with " << path.substr(path.find_last_of('/') + 1)
+              << ": mean " << mean << "/255, " << 100.0 * farFraction
+              << "% of pixels off by more than 16/255\n";
+    ok = mean <= 1.0 && farFraction <= 0.002;
   }
-  double sum = 0.0;
-  size_t far = 0;
-  const size_t pixels = static_cast<size_t>(rendered.Width) * rendered.Height;
-  for (size_t p = 0; p < pixels; ++p)
-  {
-    const int d = PixelDifference(&baseline.RGB[3 * p], &rendered.RGB[3 * p]);
-    sum += d;
-    far += d > 16 ? 1 : 0;
-  }
-  const double mean = sum / pixels;
-  const double farFraction = static_cast<double>(far) / pixels;
-  std::cout << "Strict baseline comparison: mean " << mean << "/255, " << 100.0 * farFraction
-            << "% of pixels off by more than 16/255\n";
-  const bool ok = mean <= 1.0 && farFraction <= 0.002;
   if (!ok)
   {
     // VTK writes its test image only when its own (looser) comparison fails: write this render
     // so that what is reviewed is what failed.
-    const std::string valid = testing->GetValidImageFileName();
     const std::string name = valid.substr(valid.find_last_of('/') + 1);
     const std::string path = std::string(testing->GetTempDirectory()) + "/" + name;
     vtkNew<vtkWindowToImageFilter> grab;
