@@ -3,6 +3,7 @@
 // programs run where it is not installed; the GL calls of VTK reach it through IceHeadlessGL.cxx.
 #include "IceHeadlessContext.h"
 
+#if VTKICE_HAVE_OSMESA
 #include <GL/osmesa.h>
 
 #include <dlfcn.h>
@@ -161,3 +162,16 @@ std::unique_ptr<Context> CreateOSMesaContext(std::string& error)
 }
 }
 }
+#else
+namespace IceHeadless
+{
+namespace Detail
+{
+std::unique_ptr<Context> CreateOSMesaContext(std::string& error)
+{
+  error = "this build has no osmesa back end (built without GL/osmesa.h: Debian's libosmesa6-dev)";
+  return nullptr;
+}
+}
+}
+#endif
