@@ -8,6 +8,8 @@
 #   ./ice.sh wheel [ctest options]        the wheel stage alone: a venv with the vtk 9.7.0 wheel and
 #                                         PyVista, its SDK, pip install ., every test on VTK 9.7
 #                                         (VTKICE_VTK_SOURCE: VTK 9.7.0's source archive)
+#   ./ice.sh lane trixie|sid [ctest opts] the VTK stage on Debian 13 (VTK 9.3) or sid (VTK 9.6) in a
+#                                         chroot made with mmdebstrap, then PyVista from Debian
 #   ./ice.sh vtk-sdk PREFIX               the SDK of the vtk wheel in VTKICE_PYTHON, made from
 #                                         VTKICE_VTK_SOURCE, for CMAKE_PREFIX_PATH=PREFIX pip install .
 #   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~15 min)
@@ -100,6 +102,9 @@ case "$command" in
   vtk-sdk)
     exec bash .ci/vtk-sdk.sh "$@"
     ;;
+  lane)
+    exec bash .ci/lane.sh "$@"
+    ;;
   soak)
     build
     exec Testing/Scripts/soak.sh "$@"
@@ -114,7 +119,7 @@ case "$command" in
       "| ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
       "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options]" \
-      "| ./ice.sh vtk-sdk PREFIX" >&2
+      "| ./ice.sh vtk-sdk PREFIX | ./ice.sh lane trixie|sid [ctest options]" >&2
     exit 2
     ;;
 esac
