@@ -24,7 +24,11 @@ check "cpack made $(basename "${deb:-no package}")" "$([ -n "$deb" ] && echo 0 |
 info=$(dpkg-deb --field "$deb" Package Depends Recommends)
 echo "$info" | sed 's/^/     /'
 echo "$info" | grep -q "^Package: vtkice$"; check "package name vtkice" $?
-echo "$info" | grep -q "libvtk9.1 (>= 9.1"; check "depends on Debian's libvtk9.1" $?
+# The Debian package of the VTK this build links (libvtk9.1 on Debian 12, libvtk9.3 on 13, ...).
+vtk_library=$(ldd "$build"/lib/libRenderingIce.so | awk '/libvtkCommonCore/ {print $3; exit}')
+vtk_package=$(dpkg -S "$(readlink -f "$vtk_library")" 2>/dev/null | head -1 | cut -d: -f1)
+echo "$info" | grep -qE "(^|[ ,])${vtk_package:-no-vtk-package} \(>= "
+check "depends on Debian's ${vtk_package:-VTK package (none found for $vtk_library)}" $?
 echo "$info" | grep -q "libopenimageio"; check "depends on Debian's OpenImageIO library" $?
 contents=$(dpkg-deb --contents "$deb" | awk '{print $6}')
 for file in ./usr/bin/ice-render ./usr/bin/ice-bench ./usr/include/vtkice/vtkIceMapper.h \

@@ -1,10 +1,13 @@
 """Numeric comparison of two RGB(A) images of the same size, as in the C++ tests' strict check.
 
-usage: compare_images.py A.png B.png
+usage: compare_images.py A.png B.png [--alternatives]
 Prints the mean and largest channel difference (in 1/255) and the share of pixels off by more
 than 16/255; exits 1 unless mean <= 1/255 and at most 0.2 % of the pixels are off by more than
-16/255. Uses VTK's image filters (Debian's python3-vtk9 has no numpy).
+16/255. With --alternatives, B is a baseline and its alternatives B_1.png, B_2.png, ... (VTK's
+way, where a platform draws the scene differently) count too: A must match one of them. Uses
+VTK's image filters (Debian's python3-vtk9 has no numpy).
 """
+import os
 import sys
 
 import vtk
@@ -23,11 +26,11 @@ def rgb(path):
     return cast.GetOutput()
 
 
-def main(a_path, b_path):
+def compare(a_path, b_path):
+    """(ok, the line that says how A compares with B)."""
     a, b = rgb(a_path), rgb(b_path)
     if a.GetDimensions() != b.GetDimensions():
-        print("FAIL %s is %s, %s is %s" % (a_path, a.GetDimensions(), b_path, b.GetDimensions()))
-        return 1
+        return False, "%s is %s, %s is %s" % (a_path, a.GetDimensions(), b_path, b.GetDimensions())
     difference = vtk.vtkImageMathematics()
     difference.SetOperationToSubtract()
     difference.SetInput1Data(a)
@@ -61,10 +64,20 @@ def main(a_path, b_path):
     worst = histogram.GetMax()[0]
     far = sum(counts.GetValue(i) for i in range(17, 256)) / float(pixels)
     ok = mean <= 1.0 and far <= 0.002
-    print("%s %s vs %s: %d pixels, mean %.3f/255, max %d/255, %.3f%% off by more than 16/255"
-          % ("ok  " if ok else "FAIL", a_path, b_path, pixels, mean, worst, 100.0 * far))
-    return 0 if ok else 1
+    return ok, ("%s vs %s: %d pixels, mean %.3f/255, max %d/255, %.3f%% off by more than 16/255"
+                % (a_path, b_path, pixels, mean, worst, 100.0 * far))
+
+
+def main(a_path, b_path, alternatives=False):
+    candidates = [b_path]
+    stem = b_path[:-4] if b_path.endswith(".png") else b_path
+    while alternatives and os.path.exists("%s_%d.png" % (stem, len(candidates))):
+        candidates.append("%s_%d.png" % (stem, len(candidates)))
+    results = [compare(a_path, candidate) for candidate in candidates]
+    passed = [line for ok, line in results if ok]
+    print("ok   " + passed[0] if passed else "FAIL " + results[0][1])
+    return 0 if passed else 1
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1], sys.argv[2]))
+    sys.exit(main(sys.argv[1], sys.argv[2], "--alternatives" in sys.argv[3:]))
