@@ -56,8 +56,10 @@ def test_python_suite_on_the_installed_package(script):
     assert "Traceback" not in output and "ERROR:" not in output, output
 
 
-def test_python_example_writes_its_picture(tmp_path):
-    run = subprocess.run([sys.executable, str(ROOT / "Examples" / "Python" / "ice_teapot.py")],
+@pytest.mark.parametrize("example", ["ice_teapot", "ice_pyvista"])
+def test_python_example_writes_its_picture(tmp_path, example):
+    run = subprocess.run([sys.executable, str(ROOT / "Examples" / "Python" / (example + ".py"))],
                          cwd=tmp_path, capture_output=True, text=True, timeout=300)
     assert run.returncode == 0, run.stdout + run.stderr
-    assert (tmp_path / "ice_teapot.png").stat().st_size > 10000
+    assert "Traceback" not in run.stderr and "ERROR:" not in run.stderr, run.stderr
+    assert (tmp_path / (example + ".png")).stat().st_size > 10000
