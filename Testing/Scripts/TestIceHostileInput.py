@@ -152,7 +152,10 @@ def model_cases():
         ("VTK: negative point index", "does not exist",
          write("negative.vtk", legacy_vtk(TETRA, [(0, 1, -3)]))),
         ("VTK: all points coincide", "no extent", write("point.vtk", legacy_vtk([(1, 1, 1)] * 4, TETRA_FACES))),
-        ("STL: NaN coordinates", "NaN", write("nan.stl", binary_stl([[(0, 0, 0), (1, float("nan"), 0), (0, 1, 0)]] + tris[1:]))),
+        # VTK 9.1 reads the NaN and the mapper names it; VTK 9.7's STL reader refuses it itself
+        # ("vertex 2 non-finite").
+        ("STL: NaN coordinates", "NaN|non-finite",
+         write("nan.stl", binary_stl([[(0, 0, 0), (1, float("nan"), 0), (0, 1, 0)]] + tris[1:]))),
         ("VTK: cut off", "model", write("cut.vtk", legacy_vtk(TETRA, TETRA_FACES)[:130])),
         ("VTK: binary garbage after the header", "model",
          write("garbage.vtk", b"# vtk DataFile Version 3.0\nx\nBINARY\n" + bytes(range(256)) * 4)),
