@@ -46,7 +46,7 @@ endif ()
 # The libstdc++ ABI of VTK's C++ API: whether libvtksys takes a std::__cxx11 string (the wheels'
 # libvtksys holds other __cxx11 names of the libstdc++ parts it carries). Everything that
 # passes a std::string to VTK must use VTK's; what passes one to Debian's libraries (OpenImageIO),
-# the system's (vtkice_use_system_cxx_abi).
+# the system's (vtkice_use_system_cxx_abi, VTKIceDefaults.cmake).
 get_target_property(vtkice_vtksys VTK::vtksys IMPORTED_LOCATION_RELEASE)
 if (NOT vtkice_vtksys)
   get_target_property(vtkice_vtksys VTK::vtksys LOCATION)
@@ -63,10 +63,3 @@ if (VTKICE_VTK_OLD_CXX_ABI)
   message(STATUS "VTK's libraries use the old libstdc++ ABI: building with _GLIBCXX_USE_CXX11_ABI=0")
   add_compile_definitions(_GLIBCXX_USE_CXX11_ABI=0)
 endif ()
-
-function (vtkice_use_system_cxx_abi)
-  if (VTKICE_VTK_OLD_CXX_ABI)
-    set_property(SOURCE ${ARGN} APPEND PROPERTY COMPILE_OPTIONS
-      -U_GLIBCXX_USE_CXX11_ABI -D_GLIBCXX_USE_CXX11_ABI=1)
-  endif ()
-endfunction ()
