@@ -17,6 +17,7 @@ import re
 import warnings
 
 import pyvista as _pv
+from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper as _vtkOpenGLPolyDataMapper
 
 from . import vtkIceCubeMapPass, vtkIceMapper, vtkIcePass
 
@@ -24,22 +25,20 @@ __all__ = ["add_ice", "ice_pass"]
 
 
 def _setter(mapper, name):
-    """The mapper's Set method for a look parameter given as 'NumberOfCracks' or 'number_of_cracks'."""
+    """The mapper's Set method for a parameter given as 'NumberOfCracks' or 'number_of_cracks'."""
     camel = name if name[:1].isupper() else "".join(part.title() for part in name.split("_"))
     method = getattr(mapper, "Set" + camel, None)
     if method is None:
-        known = sorted(m[3:] for m in dir(mapper) if re.match(r"Set[A-Z]", m) and
-                       hasattr(vtkIceMapper, "Get" + m[3:]) and m not in _NOT_LOOK)
-        raise TypeError("vtkice.pyvista: vtkIceMapper has no parameter %r; its look parameters "
-                        "are %s" % (name, ", ".join(known)))
+        raise TypeError("vtkice.pyvista: vtkIceMapper has no parameter %r; the ice's own are %s"
+                        % (name, ", ".join(_look_parameters())))
     return method
 
 
-# Set methods of the mapper that are not the ice's look.
-_NOT_LOOK = {"SetInputData", "SetInputConnection", "SetInputArrayToProcess", "SetLookupTable",
-             "SetScalarRange", "SetScalarMode", "SetColorMode", "SetArrayName", "SetArrayId",
-             "SetArrayComponent", "SetArrayAccessMode", "SetReferenceCount", "SetDebug",
-             "SetGlobalWarningDisplay", "SetProgressText", "SetProgressObserver"}
+def _look_parameters():
+    """The parameters vtkIceMapper adds to VTK's mapper (those of vtkOpenGLPolyDataMapper work too)."""
+    own = set(dir(vtkIceMapper)) - set(dir(_vtkOpenGLPolyDataMapper))
+    return sorted(m[3:] for m in own
+                  if re.match(r"Set[A-Z]", m) and hasattr(vtkIceMapper, "Get" + m[3:]))
 
 
 def ice_pass(plotter):
