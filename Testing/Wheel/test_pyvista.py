@@ -122,7 +122,6 @@ def test_pyvista_picker_returns_the_ice_actor():
     ("ssao", lambda p: p.enable_ssao()),
     ("eye-dome lighting", lambda p: p.enable_eye_dome_lighting()),
     ("depth of field", lambda p: p.enable_depth_of_field()),
-    ("fxaa", lambda p: p.enable_anti_aliasing("fxaa")),
     ("blur", lambda p: p.add_blurring()),
 ])
 def test_ice_pass_keeps_working_with_pyvistas_passes(name, switch_on):

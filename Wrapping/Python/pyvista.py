@@ -10,8 +10,8 @@
 
 ``add_ice`` draws a mesh with a ``vtkIceMapper`` and puts a ``vtkIcePass`` into the plotter's
 render passes where PyVista's own passes expect the pass that draws the scene: the ice works with
-PyVista's SSAO, depth of field, eye-dome lighting, FXAA and blur, before or after they are
-switched on; with its shadows or SSAA it loses its interior (a warning says so).
+PyVista's SSAO, depth of field, eye-dome lighting and blur, before or after they are switched
+on; with its shadows or SSAA it loses its interior (a warning says so).
 """
 import re
 import warnings
