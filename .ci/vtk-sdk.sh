@@ -32,8 +32,13 @@ modules_dir=$(sed -n 2p <<<"$wheel")
 platlib=lib.$(sed -n 3p <<<"$wheel")
 python_path=$(command -v "$python")
 python_path="$(cd "$(dirname "$python_path")" && pwd)/$(basename "$python_path")"
-mkdir -p "$prefix"
-prefix=$(cd "$prefix" && pwd)
+if ! ls "$modules_dir"/libvtkCommonCore*.so >/dev/null 2>&1; then
+  echo "vtk-sdk: $python's vtkmodules ($modules_dir) is not a vtk wheel's (no libvtkCommonCore there;" \
+    "Debian's python3-vtk9?): use a venv with pip install vtk" >&2
+  exit 2
+fi
+prefix=$(realpath -m "$prefix")
+mkdir -p "$(dirname "$prefix")"
 work=$(mktemp -d "$prefix.work.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 echo "vtk-sdk: VTK $version for $modules_dir, from $source, into $prefix"
