@@ -47,8 +47,9 @@ vtkSmartPointer<vtkPolyData> Sphere()
   return sphere->GetOutput();
 }
 
-// Pixels differing by more than 2 levels of 255, apart from those next to the black background
-// in `a` (a silhouette pixel where a front and a back face meet at one depth may go either way).
+// Pixels differing by more than 2 levels of 255, apart from those next to the (nearly) black
+// background in `a` (a silhouette pixel where a front and a back face meet at one depth may go
+// either way).
 size_t CountDifferingInside(const IceTest::Image& a, const IceTest::Image& b, size_t& silhouette)
 {
   size_t inside = 0;
@@ -66,9 +67,17 @@ size_t CountDifferingInside(const IceTest::Image& a, const IceTest::Image& b, si
       {
         for (int i = std::max(0, x - 1); i <= std::min(a.Width - 1, x + 1); ++i)
         {
+          // Nearly black counts too: Mesa 26's multisampling leaves pixels barely covered by the
+          // ice (7, 13, 25) between the background and the silhouette.
           const unsigned char* p = a.At(i, j);
-          edge = edge || (!p[0] && !p[1] && !p[2]);
+          edge = edge || (p[0] <= 32 && p[1] <= 32 && p[2] <= 32);
         }
+      }
+      if (!edge && inside == 0)
+      {
+        // Where the first one lies says whether it is an edge the check above misses.
+        std::cout << "     first differing pixel inside: (" << x << ", " << y << "), "
+                  << IceTest::PixelDifference(a.At(x, y), b.At(x, y)) << "/255\n";
       }
       (edge ? silhouette : inside) += 1;
     }
