@@ -12,6 +12,7 @@
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceEnvironmentReader.h"
 #include "vtkIceMapper.h"
+#include "vtkIceVTKCompat.h"
 
 #include "vtkActor.h"
 #include "vtkDataArray.h"
@@ -397,7 +398,10 @@ bool RenderFailedTexture(const std::string& path)
   renderer->SetEnvironmentTexture(texture);
   vtkNew<vtkSkybox> skybox;
   skybox->SetTexture(texture);
-  renderer->AddActor(skybox);
+  if (vtkIceVTKCompat::SkyboxDrawsUnloadedTextureCleanly)
+  {
+    renderer->AddActor(skybox); // else VTK's own skybox raises a GL error (vtkIceVTKCompat.h)
+  }
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(sphere->GetOutputPort());
