@@ -218,12 +218,17 @@ def environment_cases():
     if not os.path.exists("pipe.hdr"):
         os.mkfifo("pipe.hdr")
     hdr = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 200000\n" + b"\x80" * 64
+    # OpenImageIO 2.5 opens these headers and the reader refuses their size; OpenImageIO 3.1
+    # refuses them itself, naming the size or the header as corrupt (Debian sid).
+    oiio_refuses = "|exceeds the .* limit|may not exceed|corrupt or malicious header"
     cases = [
-        ("PNG panorama header of 200000x100000", "pixels the reader accepts",
+        ("PNG panorama header of 200000x100000", "pixels the reader accepts" + oiio_refuses,
          write("huge.png", png_header(200000, 100000))),
-        ("six face headers of 100000x100000", "accepts", "huge-faces"),
-        ("HDR header of 200000x100000", "pixels the reader accepts", write("huge.hdr", hdr)),
-        ("cross image of 40000x30000 (faces of 10000)", "accepts", write("cross.png", png_header(40000, 30000))),
+        ("six face headers of 100000x100000", "accepts" + oiio_refuses, "huge-faces"),
+        ("HDR header of 200000x100000", "pixels the reader accepts" + oiio_refuses,
+         write("huge.hdr", hdr)),
+        ("cross image of 40000x30000 (faces of 10000)", "accepts" + oiio_refuses,
+         write("cross.png", png_header(40000, 30000))),
         ("/dev/zero", "neither a folder nor a regular file", "/dev/zero"),
         ("a link to /dev/zero named .hdr", "neither a folder nor a regular file", "zero.hdr"),
         ("a pipe", "neither a folder nor a regular file", "pipe.hdr"),
