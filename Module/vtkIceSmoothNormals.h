@@ -6,7 +6,10 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+
+#include <string>
 
 inline vtkSmartPointer<vtkPolyData> vtkIceSmoothNormals(vtkPolyData* input)
 {
@@ -17,7 +20,11 @@ inline vtkSmartPointer<vtkPolyData> vtkIceSmoothNormals(vtkPolyData* input)
   normals->AutoOrientNormalsOff();
   normals->ComputePointNormalsOn();
   normals->ComputeCellNormalsOff();
-  normals->Update();
+  // One thread: VTK 9.3's threaded vtkPolyDataNormals sums a point's cell normals in whatever
+  // order its threads finish, so the same surface got normals 1 ulp apart from run to run and the
+  // ice changed between two renders of one scene (Debian 13; 9.1 and 9.6 measured exact).
+  vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("Sequential") },
+    [&normals]() { normals->Update(); });
   return normals->GetOutput();
 }
 
