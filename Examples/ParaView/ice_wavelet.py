@@ -42,7 +42,10 @@ floor.SliceType.Origin = [0, -12, 0]
 floor.SliceType.Normal = [0, 1, 0]
 floor_display = Show(floor, view)
 ColorBy(floor_display, ("POINTS", "RTData"))
-GetColorTransferFunction("RTData").ApplyPreset("Inferno (matplotlib)", True)
+try:
+    GetColorTransferFunction("RTData").ApplyPreset("Inferno (matplotlib)", True)
+except RuntimeError:  # ParaView 6.1 renamed the preset
+    GetColorTransferFunction("RTData").ApplyPreset("Inferno", True)
 
 view.CameraPosition = [38, 30, 62]
 view.CameraFocalPoint = [0, -3, 0]

@@ -10,9 +10,11 @@
 #include "vtkMultiProcessController.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkPVLODActor.h"
 #include "vtkPVView.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 vtkStandardNewMacro(vtkIceRepresentation);
 
@@ -45,21 +47,32 @@ int vtkIceRepresentation::RequestData(
   {
     return 0;
   }
-  auto* pieces = vtkMultiBlockDataSet::SafeDownCast(this->MultiBlockMaker->GetOutputDataObject(0));
+  // A multiblock from ParaView 5.11, a partitioned dataset collection from 5.13 and 6.1 (for
+  // polydata input too).
+  auto* pieces = vtkCompositeDataSet::SafeDownCast(this->MultiBlockMaker->GetOutputDataObject(0));
   if (this->Distributed && pieces)
   {
     // Every rank runs this together (ParaView updates representations on all ranks), as the
     // redistribution needs. Its result replaces the surface ParaView hands to the view (as the
-    // only block; a second vtkPVView::SetPiece would be ignored).
-    vtkNew<vtkMultiBlockDataSet> local;
+    // only block or partition; a second vtkPVView::SetPiece would be ignored).
+    vtkSmartPointer<vtkCompositeDataSet> local = vtk::TakeSmartPointer(pieces->NewInstance());
     local->ShallowCopy(pieces);
     this->MergePiece->SetInputDataObject(local);
     this->Redistribute->SetInputConnection(this->MergePiece->GetOutputPort());
     this->Redistribute->Modified();
     this->Redistribute->Update();
-    vtkNew<vtkMultiBlockDataSet> objects;
-    objects->SetBlock(0, this->Redistribute->GetOutput());
-    pieces->ShallowCopy(objects);
+    if (vtkPartitionedDataSetCollection::SafeDownCast(pieces))
+    {
+      vtkNew<vtkPartitionedDataSetCollection> objects;
+      objects->SetPartition(0, 0, this->Redistribute->GetOutput());
+      pieces->ShallowCopy(objects);
+    }
+    else
+    {
+      vtkNew<vtkMultiBlockDataSet> objects;
+      objects->SetBlock(0, this->Redistribute->GetOutput());
+      pieces->ShallowCopy(objects);
+    }
     double bounds[6];
     this->Redistribute->GetGlobalBounds(bounds);
     // On the mappers directly: modifying the representation here would update it again.

@@ -30,7 +30,11 @@ def build_scene(view):
     volume = Show(wavelet, view)
     volume.Representation = "Volume"
     volume.Scale = [0.08, 0.08, 0.08]
-    volume.Position = [0.0, -2.0, 0.0]
+    # ParaView 5.13 renamed the display's Position to Translation (the old name raises there).
+    if "Translation" in volume.ListProperties():
+        volume.Translation = [0.0, -2.0, 0.0]
+    else:
+        volume.Position = [0.0, -2.0, 0.0]
     ColorBy(volume, ("POINTS", "RTData"))
     lut = GetColorTransferFunction("RTData")
     lut.ApplyPreset("Cool to Warm", True)

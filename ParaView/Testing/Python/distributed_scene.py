@@ -70,8 +70,19 @@ if chunks == 0:
     floor.SliceType.Origin = [0, -12, 0]
     floor.SliceType.Normal = [0, 1, 0]
     floor_display = Show(floor, view)
-    ColorBy(floor_display, ("POINTS", "RTData"))
-    GetColorTransferFunction("RTData").ApplyPreset("Inferno (matplotlib)", True)
+    # Coloured by RTData with the slice's range (as one process rescales to it) set here, not by
+    # ColorBy: ParaView 5.13 and 6.1 rescale there from each rank's own piece, and ranks with an
+    # empty piece (4 ranks: "Could not determine array range") skip a collective the others
+    # enter (6.1: "MPI_ERR_TRUNCATE", or a hang), with the plugin or without.
+    lut = GetColorTransferFunction("RTData")
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RescaleTransferFunction(77.9343032836914, 235.12091064453125)
+    floor_display.LookupTable = lut
+    floor_display.ColorArrayName = ["POINTS", "RTData"]
+    try:
+        lut.ApplyPreset("Inferno (matplotlib)", True)
+    except RuntimeError:  # ParaView 6.1 renamed the preset
+        lut.ApplyPreset("Inferno", True)
     position, focal = [38, 30, 62], [0, -1, 0]
 else:
     # The benchmark: `chunks` lumpy ice chunks (about 2000 triangles each) on a grid above a

@@ -3,6 +3,7 @@ import os
 import sys
 
 import numpy
+from paraview import servermanager
 from paraview.simple import CreateTexture, CreateView, Hide, LoadPlugin, Render, SaveScreenshot
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -108,6 +109,19 @@ def shrink(mask, pixels):
     return ~grow(~mask, pixels)
 
 
+def create_texture(path):
+    """A texture proxy of the image file at `path`."""
+    texture = CreateTexture(path)
+    manager = servermanager.vtkSMProxyManager
+    if (manager.GetVersionMajor(), manager.GetVersionMinor()) == (5, 13):
+        # ParaView 5.13's CreateTexture leaves the texture without its image (its skybox then
+        # reports "No scalar values found for texture input" and GL_INVALID_VALUE and draws
+        # none); given its file name again, the texture reads it. 5.11 and 6.1 read it at once.
+        texture.FileName = ""
+        texture.FileName = path
+    return texture
+
+
 def panorama_pixels(width=512, height=256):
     """Float RGB in [0, 1], rows bottom first (VTK's order): red by longitude, green by latitude,
     a checker of blue."""
@@ -134,7 +148,7 @@ def write_environment(path):
     writer.SetFileName(path)
     writer.SetInputData(image)
     writer.Write()
-    return CreateTexture(path)
+    return create_texture(path)
 
 
 def write_hdr_environment(path, brightness=1.6):
@@ -150,4 +164,4 @@ def write_hdr_environment(path, brightness=1.6):
     with open(path, "wb") as out:
         out.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width))
         out.write(rgbe.astype(numpy.uint8).tobytes())
-    return CreateTexture(path)
+    return create_texture(path)
