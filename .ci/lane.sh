@@ -1,11 +1,23 @@
 #!/usr/bin/env bash
-# ./ice.sh lane trixie|sid [ctest options]: VTK Ice on another Debian suite's VTK, in a chroot made
-# from Debian's packages (mmdebstrap): trixie has VTK 9.3, sid VTK 9.6. The chroot is made once
-# and reused while its package list is unchanged (VTKICE_LANE_ROOT, default /var/tmp/vtkice-lanes).
-# Inside, the source tree is bound at /src and the VTK stage runs as on the host
-# (./ice.sh test-vtk: ctest under Xvfb, then the backend tests through EGL) in build-lane-SUITE/,
-# then PyVista's test with Debian's python3-pyvista. Mounts are undone on every exit (Ctrl-C too).
+# ./ice.sh lane trixie|sid [ctest options]: VTK Ice on another Debian suite's VTK and ParaView, in
+# chroots made from Debian's packages (mmdebstrap): trixie has VTK 9.3 and ParaView 5.13 (with its
+# own VTK 9.3), sid VTK 9.6 and ParaView 6.1 (on that VTK). A chroot is made once and reused while
+# its package list is unchanged; packages the list adds are installed into it (VTKICE_LANE_ROOT,
+# default /var/tmp/vtkice-lanes). Inside, the source tree is bound at /src and the VTK stage runs
+# as on the host (./ice.sh test-vtk: ctest under Xvfb, then the backend tests through EGL) in
+# build-lane-SUITE/, then PyVista's test with Debian's python3-pyvista, then the ParaView stage
+# (./ice.sh paraview: the plugin and its tests) in build-lane-SUITE-paraview/. VTKICE_LANE_STAGES
+# ("vtk paraview" by default) picks the stages. trixie's python3-paraview cannot be installed
+# beside its python3-vtk9: its ParaView stage runs in a second chroot, trixie-paraview; sid's runs
+# in the same chroot.
+# The mounts live in this run's own mount namespace: undone on every exit (Ctrl-C, kill too), never
+# seen by another run.
 set -euo pipefail
+# In a mount namespace of its own: the chroots' mounts are seen by this run only and vanish with
+# it, however it ends, and a chroot another run is using shows no mounts here.
+if [ -z "${VTKICE_LANE_NAMESPACE:-}" ]; then
+  exec unshare --mount --propagation private env VTKICE_LANE_NAMESPACE=1 bash "$0" "$@"
+fi
 cd "$(dirname "$0")/.."
 top=$PWD
 
@@ -20,8 +32,8 @@ case "$suite" in
 esac
 mirror=${VTKICE_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 lanes=${VTKICE_LANE_ROOT:-/var/tmp/vtkice-lanes}
-root=$lanes/$suite
 build_dir=build-lane-$suite
+stages=" ${VTKICE_LANE_STAGES:-vtk paraview} "
 
 # The VTK stage's packages (.ci/install-deps.sh, which runs inside too and finds them), PyVista
 # and pytest for its test, and what the tests' scripts call.
@@ -30,12 +42,27 @@ packages=(
   xvfb xauth x11-utils libgl1-mesa-dri libegl-dev libegl-mesa0 dpkg-dev lintian ffmpeg
   python3-pyvista python3-pytest procps file
 )
+# The ParaView stage's packages (install-deps.sh's paraview list), and the development packages
+# ParaView's CMake package looks for that paraview-dev does not depend on (Debian 13 and sid).
+paraview_packages=(
+  paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config
+  libglm-dev libopenimageio-dev xvfb xauth libgl1-mesa-dri x11-apps imagemagick openmpi-bin
+  mpi-default-dev libx11-dev libutfcpp-dev libdouble-conversion-dev libglew-dev libgl-dev
+  libegl-dev libxt-dev libfreetype-dev libhdf5-mpi-dev procps file
+)
 # sid's Mesa has no OSMesa any more (the build leaves the osmesa back end out).
 skip=
 if [ "$suite" = trixie ]; then
   packages+=(libosmesa6-dev)
+  paraview_root=$lanes/$suite-paraview
 else
   skip=libosmesa6-dev
+  # ParaView 6.1 is built on sid's own VTK: one chroot holds both stages.
+  packages+=(paraview paraview-dev python3-paraview python3-dev x11-apps imagemagick openmpi-bin
+    mpi-default-dev libx11-dev libutfcpp-dev libdouble-conversion-dev libglew-dev libgl-dev
+    libxt-dev libfreetype-dev libhdf5-mpi-dev)
+  paraview_root=$lanes/$suite
+  paraview_packages=("${packages[@]}")
 fi
 
 if ! command -v mmdebstrap >/dev/null 2>&1; then
@@ -43,22 +70,7 @@ if ! command -v mmdebstrap >/dev/null 2>&1; then
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq mmdebstrap >/dev/null
 fi
 
-stamp="$suite ${packages[*]}"
-if [ ! -f "$root/.vtkice-lane" ] || [ "$(cat "$root/.vtkice-lane")" != "$stamp" ]; then
-  echo "== lane $suite: making the chroot $root (mmdebstrap, Debian's packages)"
-  rm -rf "$root"
-  mkdir -p "$lanes"
-  sources=("deb $mirror $suite main")
-  if [ "$suite" = trixie ]; then
-    sources+=("deb $mirror $suite-updates main" "deb ${mirror%/debian}/debian-security $suite-security main")
-  fi
-  # sid's Release file on some mirrors is past its Valid-Until date.
-  mmdebstrap --variant=minbase --include="$(IFS=,; echo "${packages[*]}")" \
-    --aptopt='Acquire::Check-Valid-Until "false"' "$suite" "$root" "${sources[@]}"
-  printf '%s' "$stamp" >"$root/.vtkice-lane"
-fi
-
-# Mounts, undone in reverse order whatever happens.
+# Mounts this run made, undone in reverse order whatever happens.
 mounted=()
 unmount_all() {
   local i
@@ -69,30 +81,87 @@ unmount_all() {
 }
 trap unmount_all EXIT
 trap 'unmount_all; exit 130' INT TERM
-mount_in() { # mount_in TARGET MOUNT-ARGS...
-  local target=$root$1
-  shift
+mount_in() { # mount_in ROOT TARGET MOUNT-ARGS...: unless this run mounted it already
+  local target=$1$2
+  shift 2
   mkdir -p "$target"
+  if mountpoint -q "$target"; then
+    return 0
+  fi
   mount "$@" "$target"
   mounted+=("$target")
 }
-mount_in /proc -t proc proc
-mount_in /sys -t sysfs sys
-mount_in /dev --bind /dev
-mount_in /dev/pts --bind /dev/pts
-mount_in /dev/shm -t tmpfs tmpfs
-mount_in /src --bind "$top"
+# A chroot with mounts under it (made outside a lane run) is never removed.
+mounted_under() { grep -q " $1/" /proc/mounts; }
 
-inside() {
+inside() { # inside ROOT SCRIPT [ARGS...]: bash -c SCRIPT in the chroot, with none of our environment
+  local root=$1
+  shift
   chroot "$root" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 \
     VTKICE_BUILD_DIR="$build_dir" VTKICE_SKIP_PACKAGES="$skip" bash -c "$1" bash "${@:2}"
 }
-echo "== lane $suite: $(inside 'dpkg-query -W -f "VTK \${Version}" libvtk9-dev; dpkg-query -W -f ", PyVista \${Version}" python3-pyvista')"
+
+# prepare_chroot ROOT PACKAGE...: makes ROOT, a minbase chroot of $suite with PACKAGE... (unless it
+# was made before), mounts what the stages use in it and installs the packages the list gained.
+prepare_chroot() {
+  local root=$1
+  shift
+  local stamp="$suite $*"
+  local start=$SECONDS
+  if [ ! -f "$root/.vtkice-lane" ]; then
+    if mounted_under "$root"; then
+      echo "lane $suite: $root has mounts of another run; not touching it" >&2
+      exit 1
+    fi
+    echo "== lane $suite: making the chroot $root (mmdebstrap, Debian's packages)"
+    rm -rf "$root"
+    mkdir -p "$lanes"
+    local sources=("deb $mirror $suite main")
+    if [ "$suite" = trixie ]; then
+      sources+=("deb $mirror $suite-updates main" "deb ${mirror%/debian}/debian-security $suite-security main")
+    fi
+    # sid's Release file on some mirrors is past its Valid-Until date.
+    mmdebstrap --variant=minbase --include="$(IFS=,; echo "$*")" \
+      --aptopt='Acquire::Check-Valid-Until "false"' "$suite" "$root" "${sources[@]}"
+    printf '%s' "$stamp" >"$root/.vtkice-lane"
+    echo "== lane $suite: $root made in $((SECONDS - start)) s"
+  fi
+  mount_in "$root" /proc -t proc proc
+  mount_in "$root" /sys -t sysfs sys
+  mount_in "$root" /dev --bind /dev
+  mount_in "$root" /dev/pts --bind /dev/pts
+  mount_in "$root" /dev/shm -t tmpfs tmpfs
+  mount_in "$root" /src --bind "$top"
+  if [ "$(cat "$root/.vtkice-lane")" != "$stamp" ]; then
+    # The package list changed since the chroot was made: add what is missing (mmdebstrap
+    # removed the package lists, so update first; the mirror's Valid-Until is not checked).
+    echo "== lane $suite: installing the packages the list of $root adds"
+    inside "$root" 'apt-get -o Acquire::Check-Valid-Until=false update -qq &&
+      DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@"' "$@"
+    printf '%s' "$stamp" >"$root/.vtkice-lane"
+  fi
+}
 
 status=0
-inside 'cd /src && ./ice.sh test-vtk "$@"' "$@" || status=1
-echo "== lane $suite: PyVista (Debian's python3-pyvista) with the vtkice of $build_dir"
-inside 'cd /src && env -u DISPLAY PYTHONPATH=/src/$VTKICE_BUILD_DIR/lib/python3/dist-packages \
-  xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" python3 -m pytest -q -p no:cacheprovider \
-  Testing/Wheel/test_pyvista.py' || status=1
+root=$lanes/$suite
+if [[ $stages == *" vtk "* ]]; then
+  prepare_chroot "$root" "${packages[@]}"
+  echo "== lane $suite: $(inside "$root" 'dpkg-query -W -f "VTK \${Version}" libvtk9-dev; dpkg-query -W -f ", PyVista \${Version}" python3-pyvista')"
+  inside "$root" 'cd /src && ./ice.sh test-vtk "$@"' "$@" || status=1
+  echo "== lane $suite: PyVista (Debian's python3-pyvista) with the vtkice of $build_dir"
+  inside "$root" 'cd /src && env -u DISPLAY PYTHONPATH=/src/$VTKICE_BUILD_DIR/lib/python3/dist-packages \
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" python3 -m pytest -q -p no:cacheprovider \
+    Testing/Wheel/test_pyvista.py' || status=1
+fi
+
+if [[ $stages == *" paraview "* ]]; then
+  # Again for sid's one chroot: it finds it made and mounted.
+  prepare_chroot "$paraview_root" "${paraview_packages[@]}"
+  echo "== lane $suite: the ParaView stage in $build_dir-paraview," \
+    "$(inside "$paraview_root" 'dpkg-query -W -f "ParaView \${Version}" paraview-dev')"
+  start=$SECONDS
+  inside "$paraview_root" 'cd /src && VTKICE_PARAVIEW_BUILD_DIR=$VTKICE_BUILD_DIR-paraview \
+    ./ice.sh paraview "$@"' "$@" || status=1
+  echo "== lane $suite: the ParaView stage took $((SECONDS - start)) s"
+fi
 exit "$status"
