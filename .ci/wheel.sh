@@ -61,7 +61,9 @@ if [ ! -f "$root/build/build.ninja" ]; then
 fi
 cmake --build "$root/build"
 # The Python tests run under pytest below, on the installed package.
-env -u DISPLAY VTKICE_BACKEND=egl ctest --test-dir "$root/build" --output-on-failure -LE python \
+# In parallel as in ./ice.sh test-vtk (tests that measure time or memory run alone).
+env -u DISPLAY VTKICE_BACKEND=egl ctest --test-dir "$root/build" --output-on-failure \
+  -j "${VTKICE_TEST_JOBS:-$(nproc)}" -LE python \
   "$@" || status=1
 
 stage "pytest Testing/Wheel (the installed vtkice, PyVista)"
