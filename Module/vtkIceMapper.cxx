@@ -76,6 +76,9 @@ vtkIceMapper::vtkIceMapper()
   , Environment(new vtkIceStaticEnvironment)
   , Culling(new vtkIceBackfaceCulling)
 {
+  // Tinting by scalars is asked for, not inherited: filters hand their scalars on (an iso-surface
+  // carries the contoured array), and VTK's default would replace the ice colour by them.
+  this->ScalarVisibilityOff();
 }
 
 //------------------------------------------------------------------------------

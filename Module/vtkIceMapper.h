@@ -179,7 +179,9 @@ public:
    * colour with a NaN component is refused with a warning. When the mapper colours by scalars
    * (ScalarVisibility with point scalars or a selected point array, mapped through the lookup
    * table as by any VTK mapper), the mapped colour of each point is the tint instead; refraction
-   * and reflection stay. Cell arrays do not tint the ice.
+   * and reflection stay. Cell arrays do not tint the ice. Unlike other VTK mappers,
+   * ScalarVisibility is off by default: a surface that carries scalars (an iso-surface from
+   * vtkContourFilter) keeps the ice colour until ScalarVisibilityOn() asks for the tint.
    */
   virtual void SetIceColor(double red, double green, double blue);
   virtual void SetIceColor(const double color[3])

@@ -23,8 +23,8 @@ inline vtkSmartPointer<vtkPolyData> vtkIceSmoothNormals(vtkPolyData* input)
   // One thread: VTK 9.3's threaded vtkPolyDataNormals sums a point's cell normals in whatever
   // order its threads finish, so the same surface got normals 1 ulp apart from run to run and the
   // ice changed between two renders of one scene (Debian 13; 9.1 and 9.6 measured exact).
-  vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("Sequential") },
-    [&normals]() { normals->Update(); });
+  vtkSMPTools::LocalScope(
+    vtkSMPTools::Config{ std::string("Sequential") }, [&normals]() { normals->Update(); });
   return normals->GetOutput();
 }
 

@@ -32,8 +32,7 @@ inline void CubeMapTexelToWorld(double dir[3])
 
 // VTK 9.6's vtkSkybox sets its sampler to the unit of a texture that failed to load (-1):
 // GL_INVALID_VALUE, which VTK reports where it checks GL errors (measured: Debian's 9.6.2).
-constexpr bool SkyboxDrawsUnloadedTextureCleanly =
-  VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 6, 0);
+constexpr bool SkyboxDrawsUnloadedTextureCleanly = VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 6, 0);
 }
 
 #endif

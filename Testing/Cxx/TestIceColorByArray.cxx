@@ -1,6 +1,7 @@
 // Colour by array, as any VTK mapper: with ScalarVisibility and point scalars the mapped colour
 // tints the ice point by point (refraction stays); with ScalarVisibility off the ice keeps
-// IceColor. The sphere's elevation runs from blue (bottom) to red (top) through the lookup table.
+// IceColor, and off is the default (input scalars tint only when asked to). The sphere's
+// elevation runs from blue (bottom) to red (top) through the lookup table.
 #include "IceTestUtilities.h"
 #include "vtkIceMapper.h"
 
@@ -87,6 +88,10 @@ int TestIceColorByArray(int, char*[])
   renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 2.6);
   renderer->ResetCameraClippingRange();
 
+  // As made: the elevation scalars do not tint.
+  const bool offByDefault = !mapper->GetScalarVisibility();
+  window->Render();
+  const IceTest::Image asMade = IceTest::Capture(window);
   mapper->ScalarVisibilityOff();
   window->Render();
   const IceTest::Image plain = IceTest::Capture(window);
@@ -109,6 +114,8 @@ int TestIceColorByArray(int, char*[])
     std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
     ok = ok && condition;
   };
+  check(offByDefault && IceTest::CountDiffering(plain, asMade, 0) == 0,
+    "a new mapper keeps IceColor on input with scalars (ScalarVisibility off by default)");
   check(top.Red - top.Blue > plainTop.Red - plainTop.Blue + 40, "the top is tinted red");
   check(bottom.Blue - bottom.Red > plainBottom.Blue - plainBottom.Red + 40,
     "the bottom is tinted blue");
