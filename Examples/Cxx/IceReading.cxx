@@ -7,6 +7,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -135,15 +136,42 @@ std::string ReadAll(int fd)
   }
 }
 
-// The child's answer: 'D' and the output as a binary VTK XML file, or 'E' and the message.
+// Removes the point arrays with fewer values than `output` has points; says which, or nothing.
+std::string DropShortPointArrays(vtkPolyData* output)
+{
+  std::string dropped;
+  vtkPointData* pointData = output->GetPointData();
+  const vtkIdType points = output->GetNumberOfPoints();
+  for (int a = pointData->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    vtkAbstractArray* array = pointData->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() < points)
+    {
+      dropped += std::string(dropped.empty() ? "" : "; ") + "point array '" +
+        IceModelFile::Printable(array->GetName() ? array->GetName() : "(unnamed)") + "' (" +
+        std::to_string(array->GetNumberOfTuples()) + " values for " + std::to_string(points) +
+        " points)";
+      pointData->RemoveArray(a);
+    }
+  }
+  return dropped.empty() ? dropped : "dropped its " + dropped + ", which the ice does not use";
+}
+
+// The child's answer: 'W', a warning and a newline when there is one, then 'D' and the output as
+// a binary VTK XML file, or 'E' and the message.
 [[noreturn]] void Answer(int fd, vtkAlgorithm* reader)
 {
   std::string message;
   std::string answer;
+  std::string warning;
   vtkPolyData* output = nullptr;
   if (UpdateQuietly(reader, message))
   {
     output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    if (output)
+    {
+      warning = DropShortPointArrays(output);
+    }
     // Broken connectivity crashes VTK's writer too: the checks go first.
     message = output ? vtkIceMapper::CheckInput(output) : "the reader gave no polydata";
   }
@@ -154,8 +182,9 @@ std::string ReadAll(int fd)
     writer->SetDataModeToBinary();
     writer->SetCompressorTypeToNone();
     writer->WriteToOutputStringOn();
-    answer = writer->Write() ? "D" + writer->GetOutputString()
-                             : std::string("Ecannot pass the model on (out of memory?)");
+    answer = writer->Write()
+      ? (warning.empty() ? "" : "W" + warning + "\n") + "D" + writer->GetOutputString()
+      : std::string("Ecannot pass the model on (out of memory?)");
   }
   else
   {
@@ -196,7 +225,8 @@ bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error)
   return error.empty();
 }
 
-vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(vtkAlgorithm* reader, std::string& error)
+vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(
+  vtkAlgorithm* reader, std::string& error, std::string* warning)
 {
   int fds[2];
   if (::pipe(fds) != 0)
@@ -223,7 +253,7 @@ vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(vtkAlgorithm* reader, std::str
     Answer(fds[1], reader);
   }
   ::close(fds[1]);
-  const std::string answer = ReadAll(fds[0]);
+  std::string answer = ReadAll(fds[0]);
   ::close(fds[0]);
   int status = 0;
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR)
@@ -240,6 +270,15 @@ vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(vtkAlgorithm* reader, std::str
   {
     error = answer.substr(1);
     return nullptr;
+  }
+  if (answer[0] == 'W')
+  {
+    const std::string::size_type end = answer.find('\n');
+    if (warning)
+    {
+      *warning = answer.substr(1, end - 1);
+    }
+    answer.erase(0, end == std::string::npos ? answer.size() : end + 1);
   }
   vtkNew<vtkXMLPolyDataReader> copy;
   copy->ReadFromInputStringOn();

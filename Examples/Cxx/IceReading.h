@@ -21,8 +21,11 @@ bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error);
 // output, which passed vtkIceMapper::CheckInput. Call it before the program starts threads.
 // VTK 9.1's readers trust their files: a cut legacy .vtk file crashes vtkPolyDataReader, a cut PLY
 // vtkPLYReader. A crash, an abort or running out of memory in the child becomes nullptr and a
-// one-line `error`, as does a message of the reader's.
-vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(vtkAlgorithm* reader, std::string& error);
+// one-line `error`, as does a message of the reader's. Point arrays with fewer values than points
+// (an OBJ file with fewer texture coordinates than vertices), which the ice does not use and VTK
+// would read past, are dropped; `warning` (when given) then says which.
+vtkSmartPointer<vtkPolyData> ReadPolyDataIsolated(
+  vtkAlgorithm* reader, std::string& error, std::string* warning = nullptr);
 }
 
 #endif

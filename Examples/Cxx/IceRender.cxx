@@ -2,6 +2,7 @@
 // images (and a video), or in an interactive window.
 #include "IceHeadless.h"
 #include "IceLook.h"
+#include "IceModelFile.h"
 #include "IceOutputFile.h"
 #include "IceRenderOptions.h"
 #include "IceScene.h"
@@ -54,10 +55,16 @@ int main(int argc, char* argv[])
   }
 
   std::string error;
-  vtkSmartPointer<vtkPolyData> model = IceScene::LoadModel(options.Model, error);
+  std::string warning;
+  vtkSmartPointer<vtkPolyData> model = IceScene::LoadModel(options.Model, error, &warning);
   if (!model)
   {
     return Fail(error, 1);
+  }
+  if (!warning.empty())
+  {
+    std::cerr << "ice-render: model '" << IceModelFile::Printable(options.Model) << "': " << warning
+              << "\n";
   }
   vtkSmartPointer<vtkTexture> environment = IceScene::LoadEnvironment(options.Environment, error);
   if (!environment)

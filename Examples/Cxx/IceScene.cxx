@@ -257,7 +257,8 @@ void AddLandscape(vtkRenderer* renderer, double groundHeight)
   renderer->AddLight(fill);
 }
 
-vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& error)
+vtkSmartPointer<vtkPolyData> LoadModel(
+  const std::string& model, std::string& error, std::string* warning)
 {
   vtkSmartPointer<vtkAlgorithm> source;
   const bool file = model != "teapot" && model != "block" && model != "sphere";
@@ -295,7 +296,7 @@ vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& er
   vtkSmartPointer<vtkPolyData> output;
   if (file)
   {
-    output = IceReading::ReadPolyDataIsolated(source, error);
+    output = IceReading::ReadPolyDataIsolated(source, error, warning);
   }
   else if (IceReading::UpdateQuietly(source, error))
   {

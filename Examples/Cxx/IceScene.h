@@ -15,8 +15,10 @@ class vtkTexture;
 namespace IceScene
 {
 // "teapot", "block", "sphere" or a .vtp/.vtk/.stl/.obj/.ply file. The model is centred at the
-// origin and scaled so its largest extent is 2. Returns nullptr and sets `error` on failure.
-vtkSmartPointer<vtkPolyData> LoadModel(const std::string& model, std::string& error);
+// origin and scaled so its largest extent is 2. Returns nullptr and sets `error` on failure;
+// `warning` (when given) says what of a file was left out (IceReading::ReadPolyDataIsolated).
+vtkSmartPointer<vtkPolyData> LoadModel(
+  const std::string& model, std::string& error, std::string* warning = nullptr);
 
 // "sky" (procedural landscape), "test" (smooth direction pattern), or a path for
 // vtkIceEnvironmentReader: a folder holding six face images px, nx, py, ny, pz, nz (any image

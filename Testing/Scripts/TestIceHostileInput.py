@@ -96,6 +96,16 @@ def expect_ok(name, args, out, magic):
           "exit %s, stderr %r, starts %r" % (code, b"".join(err)[:200], data[:8]))
 
 
+def expect_warning(name, pattern, args, out, magic):
+    """Exit 0 with the picture written and one stderr line naming what was left out."""
+    code, _, err = run([ICE_RENDER] + args + ["--out", out], out=out)
+    with open(out, "rb") as f:
+        data = f.read()
+    said = len(err) == 1 and err[0].startswith(b"ice-render: ") and re.search(pattern.encode(), err[0])
+    check(name, code == 0 and said and data.startswith(magic) and not leftovers(out),
+          "exit %s, stderr %r, starts %r" % (code, b"".join(err)[:300], data[:8]))
+
+
 def png_header(width, height):
     def chunk(kind, data):
         return (struct.pack(">I", len(data)) + kind + data +
@@ -203,6 +213,16 @@ def model_cases():
     for name, pattern, path in cases:
         expect_error("model: " + name, pattern, ["--model", path, "--static", "--size", "64x48",
                                                  "--out", "sentinel.png"])
+    # Fewer texture coordinates than vertices (vtkOBJReader hands on the short array): the ice
+    # does not use them, so they are dropped with a line saying so, and the model renders.
+    short_vt = "".join("v %g %g %g\n" % p for p in TETRA + [(2, 2, 2)]) + \
+        "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n" + \
+        "".join("f %d/%d %d/%d %d/%d\n" % (a + 1, a + 1, b + 1, b + 1, c + 1, c + 1)
+                for a, b, c in TETRA_FACES)
+    expect_warning("model: OBJ with fewer texture coordinates than vertices",
+                   r"dropped its point array 'TCoords' \(4 values for 5 points\)",
+                   ["--model", write("short-vt.obj", short_vt), "--static", "--size", "64x48"],
+                   "short-vt.png", b"\x89PNG")
 
 
 def environment_cases():
