@@ -142,7 +142,8 @@ std::string FindInputProblem(vtkPolyData* input)
       problem << "Input is broken: its point array '"
               << (array->GetName() ? array->GetName() : "(unnamed)") << "' has "
               << array->GetNumberOfTuples() << " values for " << points
-              << " points; it is not drawn as ice.";
+              << " points; it is not drawn as ice (remove that array, or give it a value for "
+                 "every point).";
       return problem.str();
     }
   }
