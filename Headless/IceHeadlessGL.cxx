@@ -208,10 +208,14 @@ bool GLRoutingActive(std::string& error)
     error = "cannot locate the IceHeadless library in memory";
     return false;
   }
+  // The global scope, where the dynamic linker looks first when it binds VTK's GL imports
+  // (RTLD_DEFAULT would also search this library's own dependencies: in a process that loaded
+  // it later, e.g. Python importing vtkice, it would find itself and be wrong).
+  static void* const global = dlopen(nullptr, RTLD_LAZY);
   for (const char* name : { "glClear", "glXGetProcAddressARB" })
   {
     Dl_info found;
-    void* address = dlsym(RTLD_DEFAULT, name);
+    void* address = global ? dlsym(global, name) : nullptr;
     if (!address || !dladdr(address, &found) || found.dli_fbase != self.dli_fbase)
     {
       error = std::string("the program resolves ") + name + " to " +
