@@ -23,3 +23,9 @@ def mean_difference(a, b, x0, x1, y0, y1):
             total += max(abs(a.GetScalarComponentAsDouble(x, y, 0, c) -
                              b.GetScalarComponentAsDouble(x, y, 0, c)) for c in range(3))
     return total / ((x1 - x0) * (y1 - y0))
+
+
+def check(condition, message):
+    """Fails the test with `message` (unlike assert, also under python -O)."""
+    if not condition:
+        raise AssertionError(message)

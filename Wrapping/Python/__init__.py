@@ -16,3 +16,33 @@ if _vtkVersion.GetVTKVersion() != _BUILT_AGAINST:
     )
 
 from .RenderingIce import *  # noqa: F401,F403,E402
+
+
+def use_backend(name="auto"):
+    """Chooses how every render window created from now on draws: "x" (an X display), "egl" or
+    "osmesa" (no X server needed), or "auto" (X when DISPLAY opens, else EGL, else OSMesa), as
+    ``ice-render --backend`` does. Call it before the first render window is made (PyVista: before
+    the first Plotter); use one back end per process. Returns a line saying what was found.
+
+    Without it, VTK older than 9.4 aborts a script when no X display can be opened. Where vtkice
+    was built without its back ends (the pip wheel, for VTK >= 9.4), VTK's own fallback from X to
+    EGL to OSMesa serves; a named back end is then asked of VTK (VTK_DEFAULT_OPENGL_WINDOW).
+    """
+    if name not in ("auto", "x", "egl", "osmesa"):
+        raise ValueError("unknown back end %r (expected auto, x, egl or osmesa)" % (name,))
+    try:
+        from . import _headless
+    except ImportError:
+        _headless = None
+    if _headless is not None:
+        return _headless.install(name)
+    if name == "auto":
+        return "auto: VTK's own choice (X, else EGL, else OSMesa)"
+    import os
+
+    os.environ["VTK_DEFAULT_OPENGL_WINDOW"] = {
+        "x": "vtkXOpenGLRenderWindow",
+        "egl": "vtkEGLRenderWindow",
+        "osmesa": "vtkOSOpenGLRenderWindow",
+    }[name]
+    return "%s: VTK's %s" % (name, os.environ["VTK_DEFAULT_OPENGL_WINDOW"])
