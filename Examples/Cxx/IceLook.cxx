@@ -302,6 +302,15 @@ std::string Range(const std::string& name)
 }
 
 //------------------------------------------------------------------------------
+std::string Default(const std::string& name)
+{
+  static Scratch scene;
+  static const bool dynamic = (scene.Pass->SetCubeMapPass(scene.CubeMaps), true);
+  const Setting* setting = Find(name);
+  return dynamic && setting && !setting->Camera ? Value(scene.Get(), name) : std::string();
+}
+
+//------------------------------------------------------------------------------
 std::string Apply(const Target& target, const std::string& name, const std::string& value)
 {
   const Entry* entry = FindEntry(name);

@@ -53,6 +53,11 @@ std::vector<std::string> Choices(const std::string& name);
 // The library's range of a Number or Integer setting ("[0, 1]"), empty for others.
 std::string Range(const std::string& name);
 
+// The value of `name` in ice-render's scene when nothing sets it: the library's defaults, the
+// dynamic cube map on. Empty for the camera settings (the scene places the camera to frame the
+// model).
+std::string Default(const std::string& name);
+
 // Sets `name` to `value` on `target`. Returns an empty string, or why the value is refused (with
 // the library's range or the accepted names): values out of range are refused, not clamped.
 std::string Apply(const Target& target, const std::string& name, const std::string& value);

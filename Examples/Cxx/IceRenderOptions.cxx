@@ -4,12 +4,15 @@
 #include "IceModelFile.h"
 #include "IceOutputFile.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <sys/stat.h>
+#include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace IceRenderOptions
 {
@@ -21,16 +24,17 @@ const char* const Usage =
   "                  [--preset NAME|FILE] [--print-preset] [look and camera options]\n"
   "                  [--backend auto|x|egl|osmesa]\n"
   "Renders a model as ice (default: the teapot in a small landscape) to ice.png.\n"
-  "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file\n"
-  "  --env    sky, test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
+  "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file; default teapot\n"
+  "  --env    sky (default), test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
   "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too)\n"
-  "  --size   image size, default 1024x768\n"
+  "  --size   image size WxH, each in [16, 8192], default 1024x768\n"
   "  --out    output image, .png or .jpg (default ice.png); replaced only once the new image\n"
   "           is complete: a failed or interrupted run leaves the old file as it was\n"
   "  --static     no landscape and no dynamic cube map: the ice sees the environment map only\n"
   "  --interactive  a window: trackball camera, keys for the effects (h shows them)\n"
-  "  --turntable N  N images around the model, OUT-0001.png ... (and OUT.mp4 with ffmpeg)\n"
-  "  --rate FPS     frames per second of the turntable's video (default 24)\n"
+  "  --turntable N  N images around the model, OUT-0001.png ... (and OUT.mp4 with ffmpeg);\n"
+  "                 N in [1, 3600]\n"
+  "  --rate FPS     frames per second of the turntable's video, in [1, 240], default 24\n"
   "  --preset     a look: a shipped one (clear, glacier, frosted, snow) or a file of\n"
   "               NAME = VALUE lines; options on the command line override it\n"
   "  --print-preset  print the effective look as a preset and exit\n"
@@ -88,8 +92,96 @@ void PrintUsage()
         syntax += " X,Y,Z";
         break;
     }
+    const std::string initial = IceLook::Default(setting.Name);
+    syntax += initial.empty() ? ", default: framing the model" : ", default " + initial;
+    if (std::string(setting.Name) == "cube-map")
+    {
+      syntax += " (off with --static)";
+    }
     std::cout << "  " << syntax << "\n      " << setting.Help << "\n";
   }
+}
+
+// The options ice-render knows, without their dashes.
+std::vector<std::string> OptionNames()
+{
+  std::vector<std::string> names = { "model", "env", "size", "out", "static", "interactive",
+    "turntable", "rate", "preset", "print-preset", "fit", "backend", "help", "one-sided" };
+  for (const IceLook::Setting& setting : IceLook::Settings())
+  {
+    names.push_back(setting.Name);
+    if (setting.Type == IceLook::Kind::Switch)
+    {
+      names.push_back(std::string("no-") + setting.Name);
+    }
+  }
+  return names;
+}
+
+// Edits (insert, delete, replace, swap two neighbours) between `a` and `b`.
+size_t EditDistance(const std::string& a, const std::string& b)
+{
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i)
+  {
+    for (size_t j = 0; j <= b.size(); ++j)
+    {
+      if (i == 0 || j == 0)
+      {
+        d[i][j] = i + j;
+        continue;
+      }
+      d[i][j] = std::min(
+        { d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1) });
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+      {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+// " (did you mean --NAME?)" for the known option nearest to `arg` when it is near enough to be
+// a typo (a third of its letters, at least two), else "".
+std::string Suggestion(const std::string& arg)
+{
+  if (arg.empty() || arg[0] != '-')
+  {
+    return std::string();
+  }
+  const std::string typed = arg.substr(
+    arg.find_first_not_of('-') == std::string::npos ? arg.size() : arg.find_first_not_of('-'));
+  const auto equals = typed.find('=');
+  if (equals != std::string::npos)
+  {
+    const std::string name = typed.substr(0, equals);
+    const std::vector<std::string> names = OptionNames();
+    const std::vector<std::string> valued = { "model", "env", "size", "out", "backend", "preset",
+      "turntable", "rate" };
+    const IceLook::Setting* setting = IceLook::Find(name);
+    if ((setting && setting->Type != IceLook::Kind::Switch) ||
+      std::find(valued.begin(), valued.end(), name) != valued.end())
+    {
+      return " (the value follows a space: --" + name + " " + typed.substr(equals + 1) + ")";
+    }
+    if (std::find(names.begin(), names.end(), name) != names.end())
+    {
+      return " (--" + name + " takes no value)";
+    }
+  }
+  std::string best;
+  size_t bestDistance = std::max<size_t>(2, typed.size() / 3) + 1;
+  for (const std::string& name : OptionNames())
+  {
+    const size_t distance = EditDistance(typed, name);
+    if (distance < bestDistance)
+    {
+      best = name;
+      bestDistance = distance;
+    }
+  }
+  return best.empty() || typed.empty() ? std::string() : " (did you mean --" + best + "?)";
 }
 
 // Whether `path` is a regular file.
@@ -290,7 +382,10 @@ int Parse(int argc, char* argv[], Options& options)
     }
     else
     {
-      return Fail("unknown argument '" + arg + "' (see --help)", 2);
+      const std::string suggestion = Suggestion(arg);
+      return Fail("unknown argument '" + arg + "'" +
+          (suggestion.empty() ? std::string(" (see --help)") : suggestion),
+        2);
     }
   }
   if (options.Interactive && options.Turntable > 0)

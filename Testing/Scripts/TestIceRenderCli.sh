@@ -74,7 +74,25 @@ expect_error "image of no cube map layout" "no cube map layout" --env odd.png --
 printf 'not an image\n' >garbage.png
 expect_error "corrupt environment image" "Cannot read environment image" --env garbage.png --size 64x48 --out x.png
 
-expect_error "unknown option" "unknown argument" --frobnicate
+expect_error "unknown option" "unknown argument '--frobnicate' (see --help)" --frobnicate
+expect_error "a misspelled option names the nearest" "'--milkines' (did you mean --milkiness?)" \
+  --milkines 0.5
+expect_error "a misspelled switch names the nearest" "(did you mean --no-glistening?)" --no-glisten
+expect_error "NAME=VALUE says the value follows a space" "(the value follows a space: --eta 0.8)" \
+  --eta=0.8
+expect_error "SWITCH=VALUE says the switch takes none" "(--static takes no value)" --static=1
+# --help: every look and camera option shows its default beside its range or choices.
+"$ice_render" --help >help.txt 2>&1
+settings=$(awk '/^Look and camera/ {on = 1; next} on && /^  --/' help.txt)
+without=$(printf '%s\n' "$settings" | grep -v ", default" || true)
+if [ "$(printf '%s\n' "$settings" | wc -l)" -ge 30 ] && [ -z "$without" ] &&
+   grep -q '^  --milkiness \[0, 1\], default 0.5$' help.txt &&
+   grep -q '^  --cube-map, --no-cube-map, default on (off with --static)$' help.txt &&
+   grep -q '^  --view-angle \[1, 179\], default: framing the model$' help.txt; then
+  echo "ok   --help shows each setting's default beside its range"
+else
+  echo "FAIL --help: settings without a default: $without"; failures=$((failures + 1))
+fi
 expect_error "missing value" "needs a value" --model
 expect_error "bad size" "bad --size" --size 10by10
 expect_error "missing model file" "cannot open" --model does-not-exist.stl
