@@ -12,6 +12,8 @@
 #include "vtkTextProperty.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -41,7 +43,7 @@ const Key Keys[] = {
   { ',', "cracks fewer / more .", nullptr },
   { ';', "snow less / more '", "snow" },
   { 's', "save screenshot + preset", nullptr },
-  { 'h', "hide / show this legend", nullptr },
+  { 'h', "this list on/off", nullptr },
 };
 }
 
@@ -49,10 +51,11 @@ const Key Keys[] = {
 IceViewer::IceViewer()
 {
   this->Legend->GetTextProperty()->SetFontSize(14);
+  // Courier: key names read as typed ('[' is not '(' at small sizes).
+  this->Legend->GetTextProperty()->SetFontFamilyToCourier();
   this->Legend->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
   this->Legend->GetTextProperty()->SetBackgroundColor(0.0, 0.0, 0.0);
   this->Legend->GetTextProperty()->SetBackgroundOpacity(0.5);
-  this->Legend->SetPosition(8, 8);
   this->FrameTime->GetTextProperty()->SetFontSize(14);
   this->FrameTime->GetTextProperty()->SetColor(1.0, 1.0, 0.6);
   this->FrameTime->GetTextProperty()->SetBackgroundColor(0.0, 0.0, 0.0);
@@ -69,6 +72,7 @@ IceViewer::~IceViewer()
   if (this->Renderer && this->EndObserver)
   {
     this->Renderer->RemoveObserver(this->EndObserver);
+    this->Renderer->RemoveObserver(this->StartObserver);
   }
 }
 
@@ -86,6 +90,13 @@ void IceViewer::Setup(const IceLook::Target& target, vtkRenderer* renderer)
     static_cast<IceViewer*>(viewer)->ShowFrameTime();
   });
   this->EndObserver = renderer->AddObserver(vtkCommand::EndEvent, ended);
+  // The legend follows the window's size, before each render draws it.
+  vtkNew<vtkCallbackCommand> started;
+  started->SetClientData(this);
+  started->SetCallback([](vtkObject*, unsigned long, void* viewer, void*) {
+    static_cast<IceViewer*>(viewer)->FitLegend();
+  });
+  this->StartObserver = renderer->AddObserver(vtkCommand::StartEvent, started);
   for (auto setting : { std::make_pair("cracks", &this->Cracks), std::make_pair("air", &this->Air),
          std::make_pair("bumps", &this->Bumps) })
   {
@@ -116,7 +127,50 @@ std::string IceViewer::GetFrameTime() const
 //------------------------------------------------------------------------------
 std::string IceViewer::GetLegend() const
 {
-  return this->Legend->GetInput() ? this->Legend->GetInput() : "";
+  return this->LegendText;
+}
+
+//------------------------------------------------------------------------------
+int IceViewer::GetLegendFontSize() const
+{
+  return this->Legend->GetTextProperty()->GetFontSize();
+}
+
+//------------------------------------------------------------------------------
+void IceViewer::FitLegend()
+{
+  const int* size = this->Renderer ? this->Renderer->GetSize() : nullptr;
+  if (!size || size[0] <= 0 || size[1] <= 0)
+  {
+    return;
+  }
+  // 14 px at 1024x768, in proportion to the smaller side's share of that; 8 px stays readable.
+  const double scale = std::min(size[0] / 1024.0, size[1] / 768.0);
+  const int font = std::max(8, std::min(28, static_cast<int>(std::lround(14.0 * scale))));
+  this->Legend->GetTextProperty()->SetFontSize(font);
+  this->FrameTime->GetTextProperty()->SetFontSize(font);
+  this->Legend->SetPosition(font / 2 + 1, font / 2 + 1);
+  const double window = static_cast<double>(size[0]) * size[1];
+  auto share = [this, window](const std::string& text) {
+    this->Legend->SetInput(text.c_str());
+    double box[4] = { 0.0, 0.0, 0.0, 0.0 };
+    this->Legend->GetBoundingBox(this->Renderer, box);
+    return (box[1] - box[0]) * (box[3] - box[2]) / window;
+  };
+  const bool fits = share(this->LegendText) <= MaximumLegendShare;
+  if (fits)
+  {
+    this->Shown = this->LegendToggled ? LegendNone : LegendFull;
+  }
+  else
+  {
+    this->Shown = this->LegendToggled ? LegendFull : LegendHint;
+  }
+  const std::string hint = "h  keys";
+  this->Share =
+    this->Shown == LegendNone ? 0.0 : share(this->Shown == LegendFull ? this->LegendText : hint);
+  this->Legend->SetVisibility(this->Shown != LegendNone && !this->TextHidden);
+  this->FrameTime->SetVisibility(!this->TextHidden);
 }
 
 //------------------------------------------------------------------------------
@@ -133,8 +187,8 @@ void IceViewer::UpdateLegend()
     text << "\n";
   }
   text << "mouse: trackball camera, e: quit";
-  this->Legend->SetInput(text.str().c_str());
-  this->Legend->SetVisibility(this->LegendVisible);
+  this->LegendText = text.str();
+  this->FitLegend();
 }
 
 //------------------------------------------------------------------------------
@@ -240,7 +294,7 @@ bool IceViewer::HandleKey(char key)
       this->Save();
       break;
     case 'h':
-      this->LegendVisible = !this->LegendVisible;
+      this->LegendToggled = !this->LegendToggled;
       break;
     default:
       return false;
@@ -255,17 +309,15 @@ void IceViewer::Save()
   ++this->Saves;
   const std::string base = this->OutputDirectory + "/ice-view-" + std::to_string(this->Saves);
   // The picture without the legend and the readout.
-  const bool legend = this->Legend->GetVisibility() != 0;
-  this->Legend->SetVisibility(0);
-  this->FrameTime->SetVisibility(0);
+  this->TextHidden = true;
   vtkRenderWindow* window = this->Renderer->GetRenderWindow();
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->ReadFrontBufferOff();
   grab->Update();
-  this->Legend->SetVisibility(legend);
-  this->FrameTime->SetVisibility(1);
+  this->TextHidden = false;
+  this->FitLegend();
   std::string problem = IceOutputFile::WriteImage(base + ".png", grab->GetOutput());
   if (problem.empty())
   {

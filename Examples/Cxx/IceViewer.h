@@ -29,11 +29,27 @@ public:
   // it is one of the viewer's keys.
   bool HandleKey(char key);
 
-  // The legend's text and the frame-time readout, as shown.
+  // The legend's whole text (the keys and current values) and the frame-time readout.
   std::string GetLegend() const;
   std::string GetFrameTime() const;
   // The files the last save wrote (empty before the first), or why it failed.
   std::string GetLastSaved() const { return this->LastSaved; }
+
+  // What the legend shows, chosen at each render for the window's size: the whole list, or in a
+  // window where the list would cover more than MaximumLegendShare of it, one line ("h  keys");
+  // 'h' switches to the other (in a large window: to nothing).
+  enum LegendKind
+  {
+    LegendNone,
+    LegendHint,
+    LegendFull
+  };
+  LegendKind GetLegendShown() const { return this->Shown; }
+  // The legend's font size in pixels (14 at 1024x768, with the window's size, at least 8).
+  int GetLegendFontSize() const;
+  // The share of the window the shown legend covers, at the last render.
+  double GetLegendShare() const { return this->Share; }
+  static constexpr double MaximumLegendShare = 0.15;
 
   void OnChar() override;
 
@@ -42,6 +58,8 @@ protected:
   ~IceViewer() override;
 
   void UpdateLegend();
+  // Sizes the legend for the renderer's size and picks what it shows (before each render).
+  void FitLegend();
   void Save();
   void Step(const std::string& name, double delta);
   void Toggle(const std::string& name);
@@ -54,7 +72,13 @@ protected:
   vtkRenderer* Renderer = nullptr;
   vtkNew<vtkTextActor> Legend;
   vtkNew<vtkTextActor> FrameTime;
-  bool LegendVisible = true;
+  // Flipped by 'h': the other of the two choices FitLegend makes.
+  bool LegendToggled = false;
+  // The legend and readout left out (Save's picture).
+  bool TextHidden = false;
+  std::string LegendText;
+  LegendKind Shown = LegendFull;
+  double Share = 0.0;
   // Restored when cracks, air or bumps are switched on again.
   std::string Cracks = "8";
   std::string Air = "19";
@@ -63,6 +87,7 @@ protected:
   std::string OutputDirectory = ".";
   std::string LastSaved;
   unsigned long EndObserver = 0;
+  unsigned long StartObserver = 0;
 
 private:
   IceViewer(const IceViewer&) = delete;
