@@ -6,6 +6,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVIceCubeMapCompositor.h"
+#include "vtkPVIceCubeMapPass.h"
 #include "vtkRenderer.h"
 #include "vtkPVSynchronizedRenderer.h"
 
@@ -30,14 +31,11 @@ vtkPVIceRenderView::vtkPVIceRenderView()
 //------------------------------------------------------------------------------
 void vtkPVIceRenderView::Render(bool interactive, bool skip_rendering)
 {
-  // IceT paints the background black while the ranks draw; the faces show the user's (set on
-  // the renderer by UpdateBackground, which the superclass calls again).
+  // A server paints the background black while it draws (IceT on several ranks, pvserver for a
+  // client's remote rendering); the faces show the user's, which UpdateBackground sets on the
+  // renderer (the superclass calls it again).
   this->UpdateBackground();
-  vtkRenderer* renderer = this->GetRenderer();
-  this->Compositor->SetBackground(renderer->GetBackground());
-  this->Compositor->SetBackground2(renderer->GetBackground2());
-  this->Compositor->SetGradientBackground(renderer->GetGradientBackground());
-  this->Compositor->UseBackgroundOn();
+  this->CubeMapPass->SetFaceBackground(this->GetRenderer());
   this->Superclass::Render(interactive, skip_rendering);
 }
 

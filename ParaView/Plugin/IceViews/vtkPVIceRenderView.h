@@ -12,7 +12,8 @@
  *
  * On several ranks (pvbatch or pvserver under MPI) each rank renders the cube-map faces with its
  * own part of the scene and vtkPVIceCubeMapCompositor composites them by depth, so ice reflects
- * geometry held by any rank.
+ * geometry held by any rank. The faces show the view's background also where a server draws the
+ * frame on black (vtkPVIceCubeMapPass).
  */
 #ifndef vtkPVIceRenderView_h
 #define vtkPVIceRenderView_h
@@ -21,9 +22,9 @@
 #include "vtkNew.h"         // for members
 #include "vtkPVRenderView.h"
 
-class vtkIceCubeMapPass;
 class vtkIcePass;
 class vtkPVIceCubeMapCompositor;
+class vtkPVIceCubeMapPass;
 
 class ICEVIEWS_EXPORT vtkPVIceRenderView : public vtkPVRenderView
 {
@@ -69,7 +70,7 @@ private:
   void operator=(const vtkPVIceRenderView&) = delete;
 
   vtkNew<vtkIcePass> IcePass;
-  vtkNew<vtkIceCubeMapPass> CubeMapPass;
+  vtkNew<vtkPVIceCubeMapPass> CubeMapPass;
   vtkNew<vtkPVIceCubeMapCompositor> Compositor;
   bool DynamicEnvironment = false;
 };

@@ -18,19 +18,25 @@ def load_plugin():
     LoadPlugin(path, remote=False, ns=globals())
 
 
+def say(message):
+    """Prints to the process's own stdout: pvpython's sys.stdout (6.1) holds what it is given
+    until a normal exit, and finish() leaves with os._exit."""
+    print(message, file=sys.__stdout__, flush=True)
+
+
 def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message, flush=True)
+    say(("ok   " if condition else "FAIL ") + message)
     if not condition:
         failures.append(message)
 
 
 def finish():
     if failures:
-        print("%d check(s) failed" % len(failures), flush=True)
+        say("%d check(s) failed" % len(failures))
         # ParaView 5.11's pvpython crashes in sys.exit() while views exist (seen without the
         # plugin too): leave at once with the failure's status.
         os._exit(1)
-    print("all checks passed")
+    say("all checks passed")
 
 
 def make_view(kind="IceView"):
