@@ -11,10 +11,14 @@
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPartitionedDataSetCollection.h"
+#include "vtkPVIceBackgroundEnvironment.h"
+#include "vtkPVIceMapper.h"
 #include "vtkPVLODActor.h"
+#include "vtkPVRenderView.h"
 #include "vtkPVView.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 
 vtkStandardNewMacro(vtkIceRepresentation);
 
@@ -24,9 +28,10 @@ vtkIceRepresentation::vtkIceRepresentation()
   // Replace the superclass's composite mappers; SetupDefaults wires the new ones to the actor.
   this->Mapper->Delete();
   this->LODMapper->Delete();
-  this->Mapper = vtkIceMapper::New();
-  this->LODMapper = vtkIceMapper::New();
-  // Without a skybox ParaView's views have no environment: the built-in sky is the default.
+  this->Mapper = vtkPVIceMapper::New();
+  this->LODMapper = vtkPVIceMapper::New();
+  // Without a skybox ParaView's views have no environment: the ice shows the view's background
+  // (the built-in sky where even that is missing, an image background), without a warning.
   this->ForEachIceMapper([](vtkIceMapper* m) { m->WarnWithoutEnvironmentOff(); });
   this->SetupDefaults();
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
@@ -123,6 +128,14 @@ int vtkIceRepresentation::ProcessViewRequest(
     };
     merge(this->Mapper, this->Merge);
     merge(this->LODMapper, this->MergeLOD);
+    // The renderer holds the view's background now: a server paints it black later, while it
+    // draws.
+    auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+    vtkTexture* background = view && this->BackgroundEnvironment->Update(view->GetRenderer())
+      ? this->BackgroundEnvironment->GetTexture()
+      : nullptr;
+    static_cast<vtkPVIceMapper*>(this->Mapper)->SetBackgroundEnvironment(background);
+    static_cast<vtkPVIceMapper*>(this->LODMapper)->SetBackgroundEnvironment(background);
     // Empty data is common in ParaView (an iso-value out of range, an empty block or piece); the
     // ice mapper reports it as an error, ParaView's surface draws nothing: so does this.
     // A rank without ice of a distributed surface still takes part in the frame (the dynamic

@@ -17,6 +17,9 @@
  * ParaView's ordered compositing moves the ice again to its spatial partition (objects cut at
  * its planes), which the order of compositing needs.
  *
+ * Without a skybox (or another environment texture) the ice refracts and reflects the view's
+ * background, its single colour or gradient (vtkPVIceBackgroundEnvironment, vtkPVIceMapper).
+ *
  * The ice properties forward to both mappers. Two-sided refraction, cracks and air need
  * vtkIcePass, which the "Ice View" (vtkPVIceRenderView) installs; in an ordinary render view
  * the ice is one-sided and has no interior.
@@ -31,6 +34,7 @@
 class vtkCompositeDataGeometryFilter;
 class vtkIceMapper;
 class vtkIceRedistributeObjects;
+class vtkPVIceBackgroundEnvironment;
 
 class ICEVIEWS_EXPORT vtkIceRepresentation : public vtkGeometryRepresentationWithFaces
 {
@@ -97,6 +101,8 @@ private:
   bool Distributed = false;
   vtkNew<vtkCompositeDataGeometryFilter> MergePiece;
   vtkNew<vtkIceRedistributeObjects> Redistribute;
+  // The view's background as the ice's environment where the view has none.
+  vtkNew<vtkPVIceBackgroundEnvironment> BackgroundEnvironment;
 };
 
 #endif

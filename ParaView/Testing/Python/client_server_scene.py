@@ -24,7 +24,7 @@ if sys.argv[1] != "builtin":
     LoadPlugin(os.environ["VTKICE_PARAVIEW_PLUGIN"], remote=True, ns=globals())
 LoadPlugin(os.environ["VTKICE_PARAVIEW_PLUGIN"], remote=False, ns=globals())
 
-view = h.make_view()
+view = h.make_view(gradient=False)
 view.DynamicEnvironment = 1
 view.CubeMapFaceSize = 256
 ice = Sphere(ThetaResolution=96, PhiResolution=96, Radius=1)

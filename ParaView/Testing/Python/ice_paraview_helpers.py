@@ -39,12 +39,20 @@ def finish():
     say("all checks passed")
 
 
-def make_view(kind="IceView"):
+def make_view(kind="IceView", gradient=True):
+    """A view of SIZE; its background a grey gradient (light at the top), which the ice refracts
+    and reflects (a single colour would leave clean ice the colour of the background), or with
+    gradient=False a single colour."""
     view = CreateView(kind)
     view.ViewSize = SIZE
     view.OrientationAxesVisibility = 0
     view.UseColorPaletteForBackground = 0
-    view.Background = [0.2, 0.25, 0.35]
+    if gradient:
+        view.BackgroundColorMode = "Gradient"
+        view.Background = [0.25, 0.25, 0.28]
+        view.Background2 = [0.85, 0.85, 0.9]
+    else:
+        view.Background = [0.2, 0.25, 0.35]
     return view
 
 
