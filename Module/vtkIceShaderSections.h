@@ -41,21 +41,23 @@ inline std::string Get(const std::string& snippet, const std::string& name)
   return snippet.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
 }
 
-// Adds global declarations to a complete shader source, just before main().
-inline void InsertDeclarations(std::string& source, const std::string& declarations)
+// Adds global declarations to a complete shader source, just before main(). False when the
+// source has no main().
+inline bool InsertDeclarations(std::string& source, const std::string& declarations)
 {
   const std::string::size_type main = source.find("void main()");
   if (main != std::string::npos)
   {
     source.insert(main, declarations);
   }
+  return main != std::string::npos;
 }
 
 // Inserts `code` right after VTK's `tag` in `source`, keeping the tag so VTK still expands it
-// before our code.
-inline void InsertAfterTag(std::string& source, const std::string& tag, const std::string& code)
+// before our code. False when VTK's source has no such tag (nothing is inserted).
+inline bool InsertAfterTag(std::string& source, const std::string& tag, const std::string& code)
 {
-  vtkShaderProgram::Substitute(source, tag, tag + "\n" + code);
+  return vtkShaderProgram::Substitute(source, tag, tag + "\n" + code);
 }
 
 // Fills hook `name` (//ICEHOOK::name) of `source` with `code`.
@@ -64,19 +66,30 @@ inline void FillHook(std::string& source, const std::string& name, const std::st
   vtkShaderProgram::Substitute(source, "//ICEHOOK::" + name, code);
 }
 
-// Inserts `parts` into the vertex and fragment sources.
-inline void Insert(const vtkIceShaderParts& parts, std::string& vs, std::string& fs)
+// Inserts `parts` into the vertex and fragment sources. Returns the places VTK's sources lack
+// (e.g. "//VTK::Light::Impl (fragment)"), empty when every part found its place: a VTK whose
+// shaders lost one needs this code updated.
+inline std::string Insert(const vtkIceShaderParts& parts, std::string& vs, std::string& fs)
 {
-  InsertAfterTag(vs, "//VTK::Normal::Dec", parts.VertexDeclarations);
-  InsertAfterTag(vs, "//VTK::Light::Impl", parts.VertexImpl);
-  InsertAfterTag(fs, "//VTK::Normal::Dec", parts.FragmentDeclarations);
-  InsertAfterTag(fs, "//VTK::Normal::Impl", parts.FragmentNormalImpl);
-  InsertAfterTag(fs, "//VTK::Light::Impl", parts.FragmentImpl);
-  InsertDeclarations(fs, parts.FragmentFunctions);
+  std::string missing;
+  auto note = [&missing](bool found, const char* what) {
+    missing += found ? "" : std::string(missing.empty() ? "" : ", ") + what;
+  };
+  note(InsertAfterTag(vs, "//VTK::Normal::Dec", parts.VertexDeclarations),
+    "//VTK::Normal::Dec (vertex)");
+  note(InsertAfterTag(vs, "//VTK::Light::Impl", parts.VertexImpl), "//VTK::Light::Impl (vertex)");
+  note(InsertAfterTag(fs, "//VTK::Normal::Dec", parts.FragmentDeclarations),
+    "//VTK::Normal::Dec (fragment)");
+  note(InsertAfterTag(fs, "//VTK::Normal::Impl", parts.FragmentNormalImpl),
+    "//VTK::Normal::Impl (fragment)");
+  note(
+    InsertAfterTag(fs, "//VTK::Light::Impl", parts.FragmentImpl), "//VTK::Light::Impl (fragment)");
+  note(InsertDeclarations(fs, parts.FragmentFunctions), "void main() (fragment)");
   for (const auto& hook : parts.Hooks)
   {
     FillHook(fs, hook.first, hook.second);
   }
+  return missing;
 }
 }
 

@@ -27,6 +27,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVersionMacros.h"
 #include "vtkIceVTKCompat.h"
 
 #include <algorithm>
@@ -183,7 +184,7 @@ void vtkIceWorldSpaceMapper::ForgetRenderPasses()
 }
 
 //------------------------------------------------------------------------------
-void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vtkShader* gs)
+std::string vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vtkShader* gs)
 {
   // VTK adds a geometry shader for edges (EdgeVisibility) and wide lines; its shader cache then
   // renames "VSOut" to "GSOut" in the fragment shader. Every ice varying (VTK's convention:
@@ -192,12 +193,15 @@ void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vt
   // triangle's values there instead (vtkIceEdgesGS.glsl).
   if (!gs || gs->GetSource().empty())
   {
-    return;
+    return std::string();
   }
   std::string source = gs->GetSource();
+  // VTK 9.1-9.3 grow triangles by per-corner offsets; VTK 9.6 draws edges without growing.
   static const std::string grow = "gl_Position.xy = gl_Position.xy + offsets[i]*gl_Position.w;";
+  const bool grows = source.find("offsets[i]") != std::string::npos;
   const bool grown =
     source.find(grow) != std::string::npos && source.find("//VTK::Edges::Dec") != std::string::npos;
+  std::string missing = grows && !grown ? "'" + grow + "' and //VTK::Edges::Dec (geometry)" : "";
   std::string declarations;
   std::string copies;
   static const std::regex varying("out\\s+(\\w+)\\s+(ice\\w*)VSOutput\\s*;");
@@ -219,9 +223,16 @@ void vtkIceWorldSpaceMapper::PassThroughGeometryShader(const std::string& vs, vt
     copies = Get(vtkIceEdgesGS, "Impl") + copies;
     vtkShaderProgram::Substitute(source, grow, grow + "\n" + Get(vtkIceEdgesGS, "Position"));
   }
-  vtkIceShaderSections::InsertAfterTag(source, "//VTK::Normal::Dec", declarations);
-  vtkIceShaderSections::InsertAfterTag(source, "//VTK::Normal::Impl", copies);
+  for (const auto& place : { std::make_pair("//VTK::Normal::Dec", &declarations),
+         std::make_pair("//VTK::Normal::Impl", &copies) })
+  {
+    if (!vtkIceShaderSections::InsertAfterTag(source, place.first, *place.second))
+    {
+      missing += (missing.empty() ? "" : ", ") + std::string(place.first) + " (geometry)";
+    }
+  }
   gs->SetSource(source);
+  return missing;
 }
 
 //------------------------------------------------------------------------------
@@ -245,10 +256,18 @@ void vtkIceWorldSpaceMapper::ReplaceShaderValues(
     this->AddIceShaderParts(parts, ren, act);
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    vtkIceShaderSections::Insert(parts, vs, fs);
+    std::string missing = vtkIceShaderSections::Insert(parts, vs, fs);
     shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
-    PassThroughGeometryShader(vs, shaders[vtkShader::Geometry]);
+    const std::string geometry = PassThroughGeometryShader(vs, shaders[vtkShader::Geometry]);
+    missing += (missing.empty() || geometry.empty() ? "" : ", ") + geometry;
+    if (!missing.empty() && !this->ReportedShaderPlaces)
+    {
+      // Once: the ice is drawn wrong in every frame after, the message says why.
+      this->ReportedShaderPlaces = true;
+      vtkErrorMacro(<< "VTK " << VTK_VERSION << "'s shaders lack places the ice's code goes: "
+                    << missing << "; this VTK Ice does not support this VTK's shaders");
+    }
   }
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 }

@@ -94,8 +94,9 @@ protected:
     vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) = 0;
 
   // Adds to the geometry shader VTK uses for edges and wide lines, if any, the copying of every
-  // ice varying declared in `vs` (out TYPE iceNameVSOutput).
-  static void PassThroughGeometryShader(const std::string& vs, vtkShader* gs);
+  // ice varying declared in `vs` (out TYPE iceNameVSOutput). Returns what VTK's geometry shader
+  // lacks that the ice needs, empty when nothing.
+  static std::string PassThroughGeometryShader(const std::string& vs, vtkShader* gs);
 
   // Whether the helper being compiled or drawn draws surfaces rather than lines or points.
   bool IsSurfaceHelper(const vtkOpenGLHelper* helper) const;
@@ -115,6 +116,8 @@ protected:
   vtkMTimeType PreparedInputTime = 0;
   vtkPolyData* PreparedSource = nullptr;
   bool PreparedValid = false;
+  // VTK's shaders lacked a place for the ice's code: said once.
+  bool ReportedShaderPlaces = false;
 
   // Textures of the mapper's own activated for a draw, deactivated after it.
   std::vector<vtkTextureObject*> DrawTextures;
