@@ -8,6 +8,8 @@ import tempfile
 import vtk
 import vtkice
 
+from ice_test_helpers import check
+
 FACES = ["px", "nx", "py", "ny", "pz", "nz"]
 
 
@@ -25,18 +27,18 @@ def watch_errors(obj):
 
 def main():
     reader = vtkice.vtkIceEnvironmentReader()
-    assert reader.GetFaceSize() == 0
+    check(reader.GetFaceSize() == 0)
     reader.SetFaceSize(100000)
-    assert reader.GetFaceSize() == 8192, "FaceSize is clamped to [0, 8192]"
+    check(reader.GetFaceSize() == 8192, "FaceSize is clamped to [0, 8192]")
     reader.SetFaceSize(0)
 
     errors = watch_errors(reader)
     reader.SetFileName("/no/such/environment")
     reader.Update()
     print("missing file:", errors)
-    assert len(errors) == 1 and "does not exist" in errors[0]
-    assert reader.GetLayoutAsString() == "Unknown"
-    assert reader.GetOutput(0).GetNumberOfPoints() == 0
+    check(len(errors) == 1 and "does not exist" in errors[0])
+    check(reader.GetLayoutAsString() == "Unknown")
+    check(reader.GetOutput(0).GetNumberOfPoints() == 0)
 
     source = vtkice.vtkIceCubeMapSource()
     source.SetPatternToDirectionTest()
@@ -54,19 +56,19 @@ def main():
             writer.Write()
         reader.SetFileName(folder)
         reader.Update()
-        assert reader.GetLayout() == vtkice.vtkIceEnvironmentReader.Faces
+        check(reader.GetLayout() == vtkice.vtkIceEnvironmentReader.Faces)
         for port in range(6):
             read = reader.GetOutput(port).GetPointData().GetScalars()
             made = source.GetOutput(port).GetPointData().GetScalars()
-            assert read.GetNumberOfTuples() == made.GetNumberOfTuples() == 16 * 16
+            check(read.GetNumberOfTuples() == made.GetNumberOfTuples() == 16 * 16)
             worst = max(abs(read.GetComponent(t, c) - made.GetComponent(t, c))
                         for t in range(read.GetNumberOfTuples()) for c in range(3))
-            assert worst == 0, "face %s differs by %d" % (FACES[port], worst)
-    assert len(errors) == 1, "no further errors"
+            check(worst == 0, "face %s differs by %d" % (FACES[port], worst))
+    check(len(errors) == 1, "no further errors")
 
     texture = vtk.vtkTexture()
     reader.ConfigureTexture(texture)
-    assert texture.GetCubeMap() and texture.GetInterpolate()
+    check(texture.GetCubeMap() and texture.GetInterpolate())
     print("faces read back exactly; layout", reader.GetLayoutAsString())
     print("1 passed, 0 failed")
     return 0

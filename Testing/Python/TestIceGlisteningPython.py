@@ -8,6 +8,8 @@ import sys
 import vtk
 import vtkice
 
+from ice_test_helpers import check
+
 
 def grab(window):
     capture = vtk.vtkWindowToImageFilter()
@@ -27,29 +29,29 @@ def pixels(image):
 
 def check_properties():
     mapper = vtkice.vtkIceMapper()
-    assert not mapper.GetGlistening(), "Glistening is off by default"
-    assert mapper.GetSnowAmount() == 0.0
-    assert abs(mapper.GetGlisteningScale() - 0.03) < 1e-12
-    assert mapper.GetGlisteningIntensity() == 1.0
-    assert mapper.GetGlisteningAlignmentGain() == 2.0
+    check(not mapper.GetGlistening(), "Glistening is off by default")
+    check(mapper.GetSnowAmount() == 0.0)
+    check(abs(mapper.GetGlisteningScale() - 0.03) < 1e-12)
+    check(mapper.GetGlisteningIntensity() == 1.0)
+    check(mapper.GetGlisteningAlignmentGain() == 2.0)
     mapper.SetGlistening(True)
-    assert mapper.GetGlistening()
+    check(mapper.GetGlistening())
     mapper.SetSnowAmount(2.0)
-    assert mapper.GetSnowAmount() == 1.0, "SnowAmount is clamped to [0, 1]"
+    check(mapper.GetSnowAmount() == 1.0, "SnowAmount is clamped to [0, 1]")
     mapper.SetSnowAmount(-1.0)
-    assert mapper.GetSnowAmount() == 0.0, "SnowAmount is clamped to [0, 1]"
+    check(mapper.GetSnowAmount() == 0.0, "SnowAmount is clamped to [0, 1]")
     mapper.SetGlisteningAlignmentGain(0.5)
-    assert mapper.GetGlisteningAlignmentGain() == 1.0, "the gain is at least 1"
+    check(mapper.GetGlisteningAlignmentGain() == 1.0, "the gain is at least 1")
 
 
 def check_texture():
     texture = vtkice.vtkIceGlisteningTexture()
     texture.SetSize(300)
-    assert texture.GetSize() == 256, "Size is rounded down to a power of two"
+    check(texture.GetSize() == 256, "Size is rounded down to a power of two")
     image = texture.GetImage()
-    assert image.GetDimensions() == (256, 256, 1)
+    check(image.GetDimensions() == (256, 256, 1))
     scalars = image.GetPointData().GetScalars()
-    assert scalars.GetNumberOfComponents() == 4
+    check(scalars.GetNumberOfComponents() == 4)
     n = scalars.GetNumberOfTuples()
     mean = [0.0, 0.0, 0.0]
     worst = 0.0
@@ -61,8 +63,8 @@ def check_texture():
             mean[c] += v[c] / n
     print("texture: largest |length - 1| %.4f, mean vector (%.4f, %.4f, %.4f)"
           % (worst, mean[0], mean[1], mean[2]))
-    assert worst < 0.015, "texels hold unit vectors (8-bit)"
-    assert max(abs(c) for c in mean) < 0.01, "directions are uniform over the sphere"
+    check(worst < 0.015, "texels hold unit vectors (8-bit)")
+    check(max(abs(c) for c in mean) < 0.01, "directions are uniform over the sphere")
     again = vtkice.vtkIceGlisteningTexture()
     again.SetSize(256)
     other = vtkice.vtkIceGlisteningTexture()
@@ -70,8 +72,8 @@ def check_texture():
     other.SetSeed(2)
     same = again.GetImage().GetPointData().GetScalars()
     different = other.GetImage().GetPointData().GetScalars()
-    assert all(same.GetTuple4(t) == scalars.GetTuple4(t) for t in range(0, n, 97))
-    assert any(different.GetTuple4(t) != scalars.GetTuple4(t) for t in range(0, n, 97))
+    check(all(same.GetTuple4(t) == scalars.GetTuple4(t) for t in range(0, n, 97)))
+    check(any(different.GetTuple4(t) != scalars.GetTuple4(t) for t in range(0, n, 97)))
 
 
 def check_rendering():
@@ -133,9 +135,9 @@ def check_rendering():
     snow = render()
     print("glints: %d with Glistening off, %d on; mean brightness %.1f dark ice, %.1f snow"
           % (glints(plain), glints(ice), mean_brightness(ice), mean_brightness(snow)))
-    assert glints(plain) == 0, "no glints with Glistening off"
-    assert glints(ice) > 10, "Glistening on: glints"
-    assert mean_brightness(snow) > mean_brightness(ice) + 40.0, "snow is white, the ice dark"
+    check(glints(plain) == 0, "no glints with Glistening off")
+    check(glints(ice) > 10, "Glistening on: glints")
+    check(mean_brightness(snow) > mean_brightness(ice) + 40.0, "snow is white, the ice dark")
 
 
 def main():

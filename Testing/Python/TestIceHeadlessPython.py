@@ -13,7 +13,7 @@ os.environ.pop("DISPLAY", None)
 import vtk  # noqa: E402
 import vtkice  # noqa: E402
 
-from ice_test_helpers import check, grab, mean_difference  # noqa: E402
+from ice_test_helpers import add_ice, check, grab, mean_difference, sky_renderer  # noqa: E402
 
 
 def main():
@@ -21,23 +21,11 @@ def main():
     print("use_backend('auto'): " + found)
     check(not found.startswith("x"), "auto without DISPLAY must not choose X: " + found)
 
-    sky = vtkice.vtkIceCubeMapSource()
-    sky.SetFaceSize(64)
-    texture = vtk.vtkTexture()
-    sky.ConfigureTexture(texture)
-    renderer = vtk.vtkRenderer()
-    renderer.SetEnvironmentTexture(texture)
-    skybox = vtk.vtkSkybox()
-    skybox.SetTexture(texture)
-    renderer.AddActor(skybox)
+    renderer = sky_renderer(64)
     sphere = vtk.vtkSphereSource()
     sphere.SetThetaResolution(48)
     sphere.SetPhiResolution(48)
-    mapper = vtkice.vtkIceMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
-    ice = vtk.vtkActor()
-    ice.SetMapper(mapper)
-    renderer.AddActor(ice)
+    mapper, ice = add_ice(renderer, sphere)
 
     window = vtk.vtkRenderWindow()
     window.SetSize(120, 120)

@@ -12,7 +12,7 @@ os.environ.pop("DISPLAY", None)
 import vtk  # noqa: E402
 import vtkice  # noqa: E402
 
-from ice_test_helpers import check, grab, mean_difference  # noqa: E402
+from ice_test_helpers import add_ice, check, grab, mean_difference  # noqa: E402
 
 
 def main():
@@ -29,11 +29,7 @@ def main():
     renderer = vtk.vtkRenderer()
     renderer.SetBackground(0.2, 0.3, 0.4)
     sphere = vtk.vtkSphereSource()
-    mapper = vtkice.vtkIceMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
-    ice = vtk.vtkActor()
-    ice.SetMapper(mapper)
-    renderer.AddActor(ice)
+    mapper, ice = add_ice(renderer, sphere)
     window = vtk.vtkRenderWindow()
     window.SetSize(80, 80)
     window.AddRenderer(renderer)

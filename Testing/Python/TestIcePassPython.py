@@ -9,30 +9,18 @@ import sys
 import vtk
 import vtkice
 
-from ice_test_helpers import grab, mean_difference
+from ice_test_helpers import add_ice, check, grab, mean_difference, sky_renderer
 
 
 def main():
-    sky = vtkice.vtkIceCubeMapSource()
-    sky.SetFaceSize(128)
-    texture = vtk.vtkTexture()
-    sky.ConfigureTexture(texture)
-    renderer = vtk.vtkRenderer()
-    renderer.SetEnvironmentTexture(texture)
-    skybox = vtk.vtkSkybox()
-    skybox.SetTexture(texture)
-    renderer.AddActor(skybox)
+    renderer = sky_renderer(128)
 
     teapot = vtkice.vtkIceTeapotSource()
-    mapper = vtkice.vtkIceMapper()
-    mapper.SetInputConnection(teapot.GetOutputPort())
+    mapper, ice = add_ice(renderer, teapot)
     # Compare the refraction alone: no cracks, air or bumps.
     mapper.SetNumberOfCracks(0)
     mapper.SetNumberOfAirPlanes(0)
     mapper.SetBumpStrength(0.0)
-    ice = vtk.vtkActor()
-    ice.SetMapper(mapper)
-    renderer.AddActor(ice)
 
     window = vtk.vtkRenderWindow()
     window.SetSize(200, 150)
@@ -48,47 +36,47 @@ def main():
     ice_pass = vtkice.vtkIcePass()
     renderer.SetPass(ice_pass)
     two_sided = grab(window)
-    assert ice_pass.GetNumberOfIceProps() == 1
-    assert mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedBlendedNormals
+    check(ice_pass.GetNumberOfIceProps() == 1)
+    check(mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedBlendedNormals)
     mapper.SetTwoSidedMethodToExitPoint()
     exit_point = grab(window)
-    assert mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedExitPoint
+    check(mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedExitPoint)
     mapper.SetTwoSidedMethod(7)
-    assert mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedExitPoint, "clamped"
+    check(mapper.GetTwoSidedMethod() == vtkice.vtkIceMapper.TwoSidedExitPoint, "clamped")
     mapper.SetTwoSidedMethodToBlendedNormals()
-    assert mean_difference(grab(window), two_sided, 0, 200, 0, 150) == 0.0, \
-        "back to the blended normals, the same picture"
+    check(mean_difference(grab(window), two_sided, 0, 200, 0, 150) == 0.0,
+          "back to the blended normals, the same picture")
     mapper.TwoSidedRefractionOff()
     one_sided = grab(window)
 
     methods = mean_difference(two_sided, exit_point, *box)
     print("exit point vs blended normals: %.2f/255" % methods)
-    assert methods >= 1.0, "the exit point must refract otherwise"
+    check(methods >= 1.0, "the exit point must refract otherwise")
     changed = mean_difference(without_pass, two_sided, *box)
     restored = mean_difference(without_pass, one_sided, *box)
     print("two-sided vs one-sided: %.2f/255; pass with two-sided off vs no pass: %.2f/255"
           % (changed, restored))
-    assert changed >= 6.0, "two-sided refraction must change the ice"
-    assert restored == 0.0, "TwoSidedRefractionOff must give the one-sided image"
+    check(changed >= 6.0, "two-sided refraction must change the ice")
+    check(restored == 0.0, "TwoSidedRefractionOff must give the one-sided image")
 
     # The interior methods from Python: cracks and air in the ice's own shader (default) or by the
     # paper's passes; both change the ice, and differently.
     mapper.TwoSidedRefractionOn()
-    assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass
+    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass)
     mapper.SetNumberOfCracks(2)
     mapper.SetNumberOfAirPlanes(19)
     single = grab(window)
     mapper.SetInteriorMethodToPaperPasses()
-    assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses
+    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses)
     paper = grab(window)
     mapper.SetInteriorMethodToSinglePass()
-    assert mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass
+    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass)
     interior = (mean_difference(two_sided, paper, *box), mean_difference(two_sided, single, *box),
                 mean_difference(paper, single, *box))
     print("interior: paper passes %.2f/255, single pass %.2f/255 from the clear ice, %.2f/255 apart"
           % interior)
-    assert interior[0] >= 3.0 and interior[1] >= 3.0, "cracks and air must show in both methods"
-    assert interior[2] > 0.0, "the methods differ in detail"
+    check(interior[0] >= 3.0 and interior[1] >= 3.0, "cracks and air must show in both methods")
+    check(interior[2] > 0.0, "the methods differ in detail")
     mapper.SetNumberOfCracks(0)
     mapper.SetNumberOfAirPlanes(0)
 
@@ -98,7 +86,7 @@ def main():
     no_pass_no_ice = grab(window)
     unchanged = mean_difference(with_pass_no_ice, no_pass_no_ice, 0, 200, 0, 150)
     print("scene without ice, with vs without the pass: %.3f/255" % unchanged)
-    assert unchanged == 0.0
+    check(unchanged == 0.0)
     print("5 passed, 0 failed")
     return 0
 

@@ -1,5 +1,6 @@
 """Helpers shared by the Python tests: read a render window back, compare image regions."""
 import vtk
+import vtkice
 
 
 def grab(window):
@@ -25,7 +26,37 @@ def mean_difference(a, b, x0, x1, y0, y1):
     return total / ((x1 - x0) * (y1 - y0))
 
 
-def check(condition, message):
-    """Fails the test with `message` (unlike assert, also under python -O)."""
+def check(condition, message=None):
+    """Fails the test with `message`, or the line of the check (unlike assert, also under
+    python -O)."""
     if not condition:
+        if message is None:
+            import traceback
+
+            message = traceback.extract_stack(limit=2)[0].line
         raise AssertionError(message)
+
+
+def sky_renderer(face_size):
+    """A renderer whose environment and skybox are vtkIceCubeMapSource's sky, `face_size` pixels a
+    face; returns the renderer (it holds the texture)."""
+    sky = vtkice.vtkIceCubeMapSource()
+    sky.SetFaceSize(face_size)
+    texture = vtk.vtkTexture()
+    sky.ConfigureTexture(texture)
+    renderer = vtk.vtkRenderer()
+    renderer.SetEnvironmentTexture(texture)
+    skybox = vtk.vtkSkybox()
+    skybox.SetTexture(texture)
+    renderer.AddActor(skybox)
+    return renderer
+
+
+def add_ice(renderer, source, mapper=None):
+    """Draws `source`'s output as ice in `renderer`; returns the mapper and the actor."""
+    mapper = mapper or vtkice.vtkIceMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    ice = vtk.vtkActor()
+    ice.SetMapper(mapper)
+    renderer.AddActor(ice)
+    return mapper, ice
