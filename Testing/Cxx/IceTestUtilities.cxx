@@ -483,4 +483,11 @@ void MessageRecorder::Watch(vtkObject* object)
   object->AddObserver(vtkCommand::ErrorEvent, this);
   object->AddObserver(vtkCommand::WarningEvent, this);
 }
+
+//------------------------------------------------------------------------------
+bool Expect(bool condition, const std::string& what)
+{
+  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
+  return condition;
+}
 }

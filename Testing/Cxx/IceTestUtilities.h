@@ -34,6 +34,9 @@ struct Image
 
 Image Capture(vtkRenderWindow* window);
 
+// Prints "ok   WHAT" or "FAIL WHAT" and returns `condition`: the tests' one line per check.
+bool Expect(bool condition, const std::string& what);
+
 // Largest channel difference of two pixels, in 0..255.
 int PixelDifference(const unsigned char* a, const unsigned char* b);
 

@@ -145,11 +145,7 @@ bool CheckCase(const char* name, vtkPolyData* input, const char* expected)
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 // A scene in which the ice is drawn: a red unlit cone on the left, the ice on the right, the
 // ice pass with cracks. Reports the messages of the whole process, whether the cone is drawn,

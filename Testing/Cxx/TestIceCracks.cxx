@@ -30,11 +30,7 @@ bool IsRed(const unsigned char* p)
   return p[0] >= 250 && p[1] <= 5 && p[2] <= 5;
 }
 
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 // Counts pixels selected by `select` inside and outside the ice's silhouette.
 void Count(const IceTest::Image& image, const IceTest::Image& silhouette,

@@ -59,11 +59,7 @@ public:
 };
 vtkStandardNewMacro(SecondProcess);
 
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 // Pixels of the silhouette that are mostly red, mostly green, and not black outside it.
 struct Counts

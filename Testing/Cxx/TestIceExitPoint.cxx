@@ -41,11 +41,7 @@ namespace
 using glm::dvec3;
 using vtkIceOpticsReference::BackTexel;
 
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 struct Scene
 {

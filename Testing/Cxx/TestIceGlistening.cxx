@@ -3,6 +3,7 @@
 // Glistening off), crisp in the distance (as bright as near ones, one pixel) and facets up close;
 // the intensification where the view looks along the light; every kind of VTK light; snow whiter
 // and more diffuse than ice; with vtkIcePass and vtkIceCubeMapPass too.
+#include "IceTestUtilities.h"
 #include "IceGlisteningScene.h"
 #include "vtkIceCubeMapPass.h"
 #include "vtkIcePass.h"
@@ -20,11 +21,7 @@ namespace
 {
 using IceGlistening::Band;
 
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 void Print(const std::string& name, const std::vector<Band>& bands)
 {

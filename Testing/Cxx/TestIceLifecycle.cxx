@@ -41,11 +41,7 @@
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 // Largest and mean channel difference of two images of one size (255 each when sizes differ).
 struct Difference

@@ -35,12 +35,12 @@ vtkSmartPointer<vtkTexture> MakePanorama(bool hdr = false)
       const double u = (i + 0.5) / width;
       const double v = (j + 0.5) / height;
       const vtkIdType t = j * width + i;
-      texels->SetComponent(t, 0,
-        scale * static_cast<int>(127.5 + 120.0 * std::sin(8.0 * vtkMath::Pi() * u)));
-      texels->SetComponent(t, 1,
-        scale * static_cast<int>(127.5 + 100.0 * std::sin(10.0 * vtkMath::Pi() * v)));
-      texels->SetComponent(t, 2,
-        scale * static_cast<int>(127.5 + 100.0 * std::cos(14.0 * vtkMath::Pi() * u)));
+      texels->SetComponent(
+        t, 0, scale * static_cast<int>(127.5 + 120.0 * std::sin(8.0 * vtkMath::Pi() * u)));
+      texels->SetComponent(
+        t, 1, scale * static_cast<int>(127.5 + 100.0 * std::sin(10.0 * vtkMath::Pi() * v)));
+      texels->SetComponent(
+        t, 2, scale * static_cast<int>(127.5 + 100.0 * std::cos(14.0 * vtkMath::Pi() * u)));
     }
   }
   auto texture = vtkSmartPointer<vtkTexture>::New();

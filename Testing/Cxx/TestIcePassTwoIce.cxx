@@ -24,11 +24,7 @@
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 struct TwoIce
 {

@@ -33,11 +33,7 @@
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 // A cracked ice block whose cracks also bend the refraction: every texture the passes clear
 // by region is read.

@@ -23,11 +23,7 @@
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 vtkSmartPointer<vtkPolyData> Block(int seed, double x)
 {

@@ -30,11 +30,7 @@
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 // The frame-time readout's rows at the top of the window (its text changes every frame).
 constexpr int ReadoutRows = 24;

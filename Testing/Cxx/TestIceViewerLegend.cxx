@@ -26,11 +26,7 @@
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok   " : "FAIL ") << what << "\n";
-  return condition;
-}
+using IceTest::Expect;
 
 // Pixels of the model (where the ice changes the scene) that the viewer's text covers.
 size_t HiddenModelPixels(vtkRenderWindow* window, vtkRenderer* renderer, vtkActor* ice)
