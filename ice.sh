@@ -15,6 +15,8 @@
 #                                         VTKICE_VTK_SOURCE, for CMAKE_PREFIX_PATH=PREFIX pip install .
 #   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~15 min)
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
+#   ./ice.sh fuzz [seconds]               the libFuzzer harnesses, each for seconds (default 60),
+#                                         built with clang in build-fuzz/
 #   ./ice.sh bench [ice-bench options]    install what is missing, build, time ice against plain VTK
 #   ./ice.sh valgrind [frames]            build, then valgrind memcheck on one full-ice run
 #   ./ice.sh paraview [ctest options]     the ParaView stage alone: install ParaView 5.11 (in place
@@ -70,6 +72,8 @@ case "$command" in
     "./$(basename "$0")" paraview "$@" || status=1
     echo "== Debian's VTK 9.1 again"
     bash .ci/install-deps.sh || status=1
+    echo "== Fuzzing (./ice.sh fuzz 60)"
+    "./$(basename "$0")" fuzz 60 || status=1
     # The other Debian suites, in chroots: the host's packages stay as the VTK 9.1 stage needs them.
     for suite in trixie sid; do
       echo "== Debian $suite lane (./ice.sh lane $suite)"
@@ -116,6 +120,9 @@ case "$command" in
   lane)
     exec bash .ci/lane.sh "$@"
     ;;
+  fuzz)
+    exec bash .ci/fuzz.sh "$@"
+    ;;
   soak)
     build
     exec Testing/Scripts/soak.sh "$@"
@@ -127,7 +134,7 @@ case "$command" in
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
       "| ./ice.sh test-vtk [ctest options]" \
-      "| ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
+      "| ./ice.sh fuzz [seconds] | ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
       "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options]" \
       "| ./ice.sh vtk-sdk PREFIX | ./ice.sh lane trixie|sid [ctest options]" >&2

@@ -5,6 +5,7 @@
 # Skips apt-get entirely when every package is already installed.
 #   .ci/install-deps.sh            Debian's VTK 9.1 and everything the main build and tests use
 #   .ci/install-deps.sh paraview   Debian's ParaView 5.11 (with its own VTK 9.2) for the plugin
+#   .ci/install-deps.sh fuzz       the first list and clang with libFuzzer (./ice.sh fuzz)
 # The two VTKs cannot be installed together: apt replaces one by the other, so each stage calls
 # this first and finds what it needs whatever ran before.
 set -euo pipefail
@@ -24,6 +25,9 @@ else
     xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
     dpkg-dev lintian ffmpeg
   )
+  if [ "${1:-}" = fuzz ]; then
+    packages+=(clang-14 libclang-rt-14-dev)
+  fi
 fi
 # VTKICE_SKIP_PACKAGES: packages a Debian suite does not have (sid: libosmesa6-dev).
 missing=()

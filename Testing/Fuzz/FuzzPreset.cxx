@@ -1,0 +1,28 @@
+// libFuzzer harness: ice-render's preset files (IceLook::ReadPreset: "NAME = VALUE" lines,
+// checked against the library's ranges before anything is applied). Every file gives either a
+// list of assignments that apply cleanly or one problem, never a fault.
+#include "IceLook.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <unistd.h>
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+  static const std::string path = "/tmp/vtkice-fuzz-preset-" + std::to_string(getpid());
+  FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file)
+  {
+    return 0;
+  }
+  std::fwrite(data, 1, size, file);
+  std::fclose(file);
+  IceLook::Assignments assignments;
+  if (IceLook::ReadPreset(path, assignments).empty() && !IceLook::Check(assignments).empty())
+  {
+    __builtin_trap(); // accepted, then refused
+  }
+  std::remove(path.c_str());
+  return 0;
+}
