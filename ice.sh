@@ -109,7 +109,7 @@ case "$command" in
     cmake --build "$pv_build_dir"
     # A tall screen: the GUI test's screenshot shows the Ice property group.
     xvfb-run -a -s "-screen 0 1280x1400x24 -noreset" \
-      ctest --test-dir "$pv_build_dir" --output-on-failure "$@"
+      ctest --test-dir "$pv_build_dir" --output-on-failure -j "$test_jobs" "$@"
     ;;
   wheel)
     exec bash .ci/wheel.sh "$@"

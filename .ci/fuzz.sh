@@ -14,7 +14,7 @@ harnesses=(FuzzCheckInput FuzzModelFile FuzzEnvironmentHeader FuzzPreset)
 bash .ci/install-deps.sh fuzz
 if [ ! -f "$build_dir/build.ninja" ]; then
   CC=clang-14 CXX=clang++-14 cmake -S . -B "$build_dir" -G Ninja \
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=OFF -DVTKICE_WRAP_PYTHON=OFF \
+    -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DVTKICE_WRAP_PYTHON=OFF \
     -DVTKICE_FUZZ=ON
 fi
 cmake --build "$build_dir" --target fuzzers
