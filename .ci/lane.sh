@@ -4,8 +4,8 @@
 # own VTK 9.3), sid VTK 9.6 and ParaView 6.1 (on that VTK). A chroot is made once and reused while
 # its package list is unchanged; packages the list adds are installed into it (VTKICE_LANE_ROOT,
 # default /var/tmp/vtkice-lanes). Inside, the source tree is bound at /src and the VTK stage runs
-# as on the host (./ice.sh test-vtk: ctest under Xvfb, then the backend tests through EGL) in
-# build-lane-SUITE/, then PyVista's test with Debian's python3-pyvista, then the ParaView stage
+# as on the host but with each test once (./ice.sh test-vtk with VTKICE_TESTS_ONCE=1: the tests
+# labelled backend through EGL, the others under Xvfb) in build-lane-SUITE/, then PyVista's test with Debian's python3-pyvista, then the ParaView stage
 # (./ice.sh paraview: the plugin and its tests) in build-lane-SUITE-paraview/. VTKICE_LANE_STAGES
 # ("vtk paraview" by default) picks the stages. trixie's python3-paraview cannot be installed
 # beside its python3-vtk9: its ParaView stage runs in a second chroot, trixie-paraview; sid's runs
@@ -98,7 +98,8 @@ inside() { # inside ROOT SCRIPT [ARGS...]: bash -c SCRIPT in the chroot, with no
   local root=$1
   shift
   chroot "$root" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 \
-    VTKICE_BUILD_DIR="$build_dir" VTKICE_SKIP_PACKAGES="$skip" bash -c "$1" bash "${@:2}"
+    VTKICE_BUILD_DIR="$build_dir" VTKICE_SKIP_PACKAGES="$skip" VTKICE_TESTS_ONCE=1 \
+    bash -c "$1" bash "${@:2}"
 }
 
 # prepare_chroot ROOT PACKAGE...: makes ROOT, a minbase chroot of $suite with PACKAGE... (unless it
