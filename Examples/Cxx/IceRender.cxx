@@ -1,7 +1,7 @@
 // ice-render: renders a model as ice in front of an environment: to an image, a turntable of
 // images (and a video), or in an interactive window.
 #include "IceHeadless.h"
-#include "IceLook.h"
+#include "vtkIceLookTable.h"
 #include "IceModelFile.h"
 #include "IceOutputFile.h"
 #include "IceRenderOptions.h"

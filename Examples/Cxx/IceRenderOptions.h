@@ -2,7 +2,7 @@
 #ifndef IceRenderOptions_h
 #define IceRenderOptions_h
 
-#include "IceLook.h"
+#include "vtkIceLookTable.h"
 
 #include <string>
 #include <vector>

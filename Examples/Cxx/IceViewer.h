@@ -4,7 +4,7 @@
 #ifndef IceViewer_h
 #define IceViewer_h
 
-#include "IceLook.h"
+#include "vtkIceLookTable.h"
 
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkNew.h"

@@ -3,7 +3,7 @@
 // and the rendered picture where it should; the legend shows the current values, the readout the
 // frame time; the save key writes a screenshot and a preset that gives the same look back; other
 // keys go to VTK's trackball style.
-#include "IceLook.h"
+#include "vtkIceLookTable.h"
 #include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "IceViewer.h"

@@ -2,7 +2,7 @@
 // readable size in a corner; at 400x300 it shrinks to one line ("h  keys") that leaves the model
 // alone, and 'h' brings the whole list at the smallest readable size; resizing back gives the
 // whole list again. Its key names are the characters typed ('[' and ']', not '(' and ')').
-#include "IceLook.h"
+#include "vtkIceLookTable.h"
 #include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "IceViewer.h"

@@ -1,7 +1,7 @@
 // libFuzzer harness: ice-render's preset files (IceLook::ReadPreset: "NAME = VALUE" lines,
 // checked against the library's ranges before anything is applied). Every file gives either a
 // list of assignments that apply cleanly or one problem, never a fault.
-#include "IceLook.h"
+#include "vtkIceLookTable.h"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "IceLook.h"
+#include "vtkIceLookTable.h"
 
 #include "vtkCamera.h"
 #include "vtkIceCubeMapPass.h"
@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -251,13 +250,6 @@ Scratch& Defaults()
   static Scratch scratch;
   return scratch;
 }
-
-std::string Trim(const std::string& text)
-{
-  const auto begin = text.find_first_not_of(" \t\r");
-  const auto end = text.find_last_not_of(" \t\r");
-  return begin == std::string::npos ? std::string() : text.substr(begin, end - begin + 1);
-}
 }
 
 //------------------------------------------------------------------------------
@@ -282,10 +274,11 @@ const Setting* Find(const std::string& name)
 }
 
 //------------------------------------------------------------------------------
-std::vector<std::string> Choices(const std::string& name)
+const std::vector<std::string>& Choices(const std::string& name)
 {
+  static const std::vector<std::string> none;
   const Entry* entry = FindEntry(name);
-  return entry ? entry->Names : std::vector<std::string>();
+  return entry ? entry->Names : none;
 }
 
 //------------------------------------------------------------------------------
@@ -299,6 +292,20 @@ std::string Range(const std::string& name)
   Scratch& d = Defaults();
   return "[" + Format(entry->Low(d.Mapper, d.CubeMaps)) + ", " +
     Format(entry->High(d.Mapper, d.CubeMaps)) + "]";
+}
+
+//------------------------------------------------------------------------------
+bool Bounds(const std::string& name, double& low, double& high)
+{
+  const Entry* entry = FindEntry(name);
+  if (!entry || !entry->Low)
+  {
+    return false;
+  }
+  Scratch& d = Defaults();
+  low = entry->Low(d.Mapper, d.CubeMaps);
+  high = entry->High(d.Mapper, d.CubeMaps);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -416,61 +423,6 @@ std::string Value(const Target& target, const std::string& name)
     default:
       return Format(entry->Get(target));
   }
-}
-
-//------------------------------------------------------------------------------
-std::string ReadPreset(const std::string& path, Assignments& assignments)
-{
-  std::ifstream file(path);
-  if (!file)
-  {
-    return "cannot read preset '" + path + "'";
-  }
-  std::string line;
-  for (int number = 1; std::getline(file, line); ++number)
-  {
-    line = Trim(line.substr(0, line.find('#')));
-    if (line.empty())
-    {
-      continue;
-    }
-    const auto equals = line.find('=');
-    const std::string where = path + ":" + std::to_string(number) + ": ";
-    if (equals == std::string::npos)
-    {
-      return where + "expected NAME = VALUE";
-    }
-    const std::string name = Trim(line.substr(0, equals));
-    const std::string value = Trim(line.substr(equals + 1));
-    if (!Find(name))
-    {
-      return where + "unknown setting '" + name + "'";
-    }
-    const std::string problem = Check({ { name, value } });
-    if (!problem.empty())
-    {
-      return where + problem;
-    }
-    assignments.emplace_back(name, value);
-  }
-  return file.bad() ? "cannot read preset '" + path + "'" : std::string();
-}
-
-//------------------------------------------------------------------------------
-std::string WritePreset(const Target& target, const std::vector<std::string>& cameraGiven)
-{
-  std::string text = "# VTK Ice look (ice-render --print-preset); use with --preset FILE\n";
-  for (const Entry& entry : Entries())
-  {
-    const std::string name = entry.Info.Name;
-    if (entry.Info.Camera &&
-      std::find(cameraGiven.begin(), cameraGiven.end(), name) == cameraGiven.end())
-    {
-      continue;
-    }
-    text += name + " = " + Value(target, name) + "\n";
-  }
-  return text;
 }
 
 //------------------------------------------------------------------------------

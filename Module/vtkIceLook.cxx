@@ -1,0 +1,170 @@
+#include "vtkIceLook.h"
+
+#include "vtkCamera.h"
+#include "vtkIceCubeMapPass.h"
+#include "vtkIceLookTable.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkIceLook);
+
+namespace
+{
+const IceLook::Setting* At(int i)
+{
+  const auto& settings = IceLook::Settings();
+  return i >= 0 && i < static_cast<int>(settings.size()) ? &settings[i] : nullptr;
+}
+
+// The table's settings act on all four without checking them: refuse a scene that lacks one.
+bool Complete(const IceLook::Target& target)
+{
+  return target.Mapper && target.Pass && target.CubeMaps && target.Camera;
+}
+
+const char* const NoScene = "vtkIceLook needs a mapper, a pass, a cube-map pass and a camera";
+}
+
+//------------------------------------------------------------------------------
+void vtkIceLook::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSettings: " << vtkIceLook::GetNumberOfSettings() << "\n";
+}
+
+//------------------------------------------------------------------------------
+int vtkIceLook::GetNumberOfSettings()
+{
+  return static_cast<int>(IceLook::Settings().size());
+}
+
+//------------------------------------------------------------------------------
+int vtkIceLook::FindSetting(const char* name)
+{
+  for (int i = 0; name && i < vtkIceLook::GetNumberOfSettings(); ++i)
+  {
+    if (std::string(name) == At(i)->Name)
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkIceLook::GetName(int i)
+{
+  const IceLook::Setting* setting = At(i);
+  return setting ? setting->Name : nullptr;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkIceLook::GetKind(int i)
+{
+  const IceLook::Setting* setting = At(i);
+  if (!setting)
+  {
+    return nullptr;
+  }
+  switch (setting->Type)
+  {
+    case IceLook::Kind::Number:
+      return "number";
+    case IceLook::Kind::Integer:
+      return "integer";
+    case IceLook::Kind::Switch:
+      return "switch";
+    case IceLook::Kind::Choice:
+      return "choice";
+    case IceLook::Kind::Vector:
+      return "vector";
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkIceLook::GetHelp(int i)
+{
+  const IceLook::Setting* setting = At(i);
+  return setting ? setting->Help : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceLook::IsCameraSetting(int i)
+{
+  const IceLook::Setting* setting = At(i);
+  return setting && setting->Camera;
+}
+
+//------------------------------------------------------------------------------
+double vtkIceLook::GetMinimum(int i)
+{
+  double low = 0.0, high = 0.0;
+  return At(i) && IceLook::Bounds(At(i)->Name, low, high) ? low : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkIceLook::GetMaximum(int i)
+{
+  double low = 0.0, high = 0.0;
+  return At(i) && IceLook::Bounds(At(i)->Name, low, high) ? high : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkIceLook::GetNumberOfChoices(int i)
+{
+  return At(i) ? static_cast<int>(IceLook::Choices(At(i)->Name).size()) : 0;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkIceLook::GetChoice(int i, int choice)
+{
+  if (choice < 0 || choice >= vtkIceLook::GetNumberOfChoices(i))
+  {
+    return nullptr;
+  }
+  // The table's own strings: they live as long as the library.
+  return IceLook::Choices(At(i)->Name)[choice].c_str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceLook::GetDefault(int i)
+{
+  return At(i) ? IceLook::Default(At(i)->Name) : std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceLook::Apply(vtkIceMapper* mapper, vtkIcePass* pass, vtkIceCubeMapPass* cubeMaps,
+  vtkCamera* camera, const char* name, const char* value)
+{
+  const IceLook::Target target{ mapper, pass, cubeMaps, camera };
+  if (!Complete(target))
+  {
+    return NoScene;
+  }
+  return IceLook::Apply(target, name ? name : "", value ? value : "");
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceLook::GetValue(vtkIceMapper* mapper, vtkIcePass* pass,
+  vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, const char* name)
+{
+  const IceLook::Target target{ mapper, pass, cubeMaps, camera };
+  return Complete(target) && name ? IceLook::Value(target, name) : std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceLook::ApplyPreset(vtkIceMapper* mapper, vtkIcePass* pass,
+  vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, const char* path)
+{
+  const IceLook::Target target{ mapper, pass, cubeMaps, camera };
+  if (!Complete(target))
+  {
+    return NoScene;
+  }
+  IceLook::Assignments assignments;
+  const std::string problem = IceLook::ReadPreset(path ? path : "", assignments);
+  // ReadPreset checked every line on a scratch scene, so applying cannot stop half-way.
+  return problem.empty() ? IceLook::ApplyAll(target, assignments) : problem;
+}
