@@ -1,7 +1,7 @@
 // ice-bench's command line: the usage text and the checking of every option.
 #include "IceBench.h"
 #include "IceHeadless.h"
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 #include "IceOutputFile.h"
 
 #include <cstdio>

@@ -1,5 +1,5 @@
 #include "IceOutputFile.h"
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 
 #include "vtkImageData.h"
 #include "vtkImageWriter.h"

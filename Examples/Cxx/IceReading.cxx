@@ -1,5 +1,5 @@
 #include "IceReading.h"
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkIceMapper.h"

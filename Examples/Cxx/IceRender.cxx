@@ -2,7 +2,7 @@
 // images (and a video), or in an interactive window.
 #include "IceHeadless.h"
 #include "vtkIceLookTable.h"
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 #include "IceOutputFile.h"
 #include "IceRenderOptions.h"
 #include "IceScene.h"

@@ -1,7 +1,7 @@
 #include "IceRenderOptions.h"
 
 #include "IceHeadless.h"
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 #include "IceOutputFile.h"
 
 #include <algorithm>

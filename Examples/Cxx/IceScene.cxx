@@ -1,5 +1,5 @@
 #include "IceScene.h"
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 #include "IceReading.h"
 
 #include "vtkIceBlockSource.h"
@@ -39,9 +39,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <system_error>
 
 namespace IceScene
 {
@@ -61,33 +58,6 @@ std::string Extension(const std::string& path)
   std::transform(
     ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
-}
-
-// Why the file at `path` cannot be handed to a reader, or "": it must be a regular file (a
-// device such as /dev/zero or a pipe would never end), readable, and for the formats whose VTK
-// readers trust their headers, consistent with them (IceModelFile.h).
-std::string FileProblem(const std::string& path)
-{
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status))
-  {
-    return "cannot open model file '" + IceModelFile::Printable(path) + "'";
-  }
-  if (!std::filesystem::is_regular_file(status))
-  {
-    return "model '" + IceModelFile::Printable(path) + "' is not a regular file";
-  }
-  if (!std::ifstream(path).good())
-  {
-    return "cannot open model file '" + IceModelFile::Printable(path) + "'";
-  }
-  const std::string ext = Extension(path);
-  const std::string problem = ext == "stl" ? IceModelFile::CheckSTL(path)
-    : ext == "ply"                         ? IceModelFile::CheckPLY(path)
-                                           : std::string();
-  return problem.empty() ? problem
-                         : "cannot read model '" + IceModelFile::Printable(path) + "': " + problem;
 }
 
 vtkSmartPointer<vtkAlgorithm> ModelReader(const std::string& path, std::string& error)
@@ -285,7 +255,7 @@ vtkSmartPointer<vtkPolyData> LoadModel(
     {
       return nullptr;
     }
-    error = FileProblem(model);
+    error = IceModelFile::CheckFile(model);
     if (!error.empty())
     {
       return nullptr;

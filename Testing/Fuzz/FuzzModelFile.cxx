@@ -1,7 +1,7 @@
 // libFuzzer harness: ice-render's checks of STL and PLY files (IceModelFile), which run before
 // VTK's readers and must answer every file with "" or one sentence. The first byte picks the
 // check; the rest is the file.
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,6 +1,9 @@
-#include "IceModelFile.h"
+#include "vtkIceModelFileChecks.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <system_error>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -490,5 +493,32 @@ std::string CheckSTL(const std::string& path)
 std::string CheckPLY(const std::string& path)
 {
   return PlyChecker(path).Check();
+}
+
+//------------------------------------------------------------------------------
+std::string CheckFile(const std::string& path)
+{
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status))
+  {
+    return "cannot open model file '" + Printable(path) + "'";
+  }
+  if (!std::filesystem::is_regular_file(status))
+  {
+    return "model '" + Printable(path) + "' is not a regular file";
+  }
+  if (!std::ifstream(path).good())
+  {
+    return "cannot open model file '" + Printable(path) + "'";
+  }
+  const std::string::size_type dot = path.rfind('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(
+    ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string problem = ext == "stl" ? CheckSTL(path)
+    : ext == "ply"                         ? CheckPLY(path)
+                                           : std::string();
+  return problem.empty() ? problem : "cannot read model '" + Printable(path) + "': " + problem;
 }
 }

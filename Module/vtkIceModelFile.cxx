@@ -1,0 +1,25 @@
+#include "vtkIceModelFile.h"
+
+#include "vtkIceModelFileChecks.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkIceModelFile);
+
+//------------------------------------------------------------------------------
+void vtkIceModelFile::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceModelFile::CheckFile(const char* path)
+{
+  return path ? IceModelFile::CheckFile(path) : std::string("no model file named");
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceModelFile::Printable(const char* text, int limit)
+{
+  return text ? IceModelFile::Printable(text, limit > 0 ? static_cast<std::size_t>(limit) : 0)
+              : std::string();
+}
