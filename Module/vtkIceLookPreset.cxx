@@ -61,8 +61,9 @@ std::string WritePreset(const Target& target, const std::vector<std::string>& ca
   for (const Setting& setting : Settings())
   {
     const std::string name = setting.Name;
-    if (setting.Camera &&
-      std::find(cameraGiven.begin(), cameraGiven.end(), name) == cameraGiven.end())
+    if ((setting.Camera &&
+          std::find(cameraGiven.begin(), cameraGiven.end(), name) == cameraGiven.end()) ||
+      setting.SynonymOf)
     {
       continue;
     }

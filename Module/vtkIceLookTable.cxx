@@ -108,7 +108,29 @@ std::vector<Entry> MakeEntries()
   const Bound anyLow = [](vtkIceMapper*, vtkIceCubeMapPass*) { return -2147483648.0; };
   const Bound anyHigh = [](vtkIceMapper*, vtkIceCubeMapPass*) { return 2147483647.0; };
 
-  ICE_MAPPER_NUMBER("eta", "ratio of refraction indices, air / ice (eq 2)", RefractionRatio);
+  ICE_MAPPER_NUMBER(
+    "ior", "index of refraction of the ice (glTF's; 1.31 for ice)", IndexOfRefraction);
+  // eta is ior's inverse as eq 2 writes it: air / ice, below 1 for ice. Above 1 it would be the
+  // optics of air in something denser, which is what a user typing ice's 1.31 here does not mean.
+  number(
+    "eta", "ratio of refraction indices, air / ice (eq 2): 1 / ior",
+    [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->GetRefractionRatioMinValue(); },
+    [](vtkIceMapper*, vtkIceCubeMapPass*) { return 1.0; },
+    [](const Target& t) { return t.Mapper->GetRefractionRatio(); },
+    [](const Target& t, double v) { t.Mapper->SetRefractionRatio(v); });
+  e.back().Info.SynonymOf = "ior";
+  {
+    Entry color;
+    color.Info = { "attenuation-color", Kind::Vector,
+      "colour white light has after attenuation-distance in the ice, red,green,blue in [0, 1]",
+      false };
+    color.GetVector = [](const Target& t, double* v) { t.Mapper->GetAttenuationColor(v); };
+    color.SetVector = [](const Target& t, const double* v) { t.Mapper->SetAttenuationColor(v); };
+    e.push_back(color);
+  }
+  ICE_MAPPER_NUMBER("attenuation-distance",
+    "distance in the ice after which light has attenuation-color (inf: no absorption)",
+    AttenuationDistance);
   ICE_MAPPER_NUMBER("fresnel-power", "exponent P of the Fresnel term (eq 4)", FresnelPower);
   {
     Entry color;
@@ -336,9 +358,22 @@ std::string Apply(const Target& target, const std::string& name, const std::stri
       const double low = entry->Low(d.Mapper, d.CubeMaps);
       const double high = entry->High(d.Mapper, d.CubeMaps);
       const bool integer = entry->Info.Type == Kind::Integer;
-      if (!ParseNumber(value, v) || (integer && v != std::floor(v)) || v < low || v > high)
+      // "inf" where the range is unbounded (attenuation-distance: no absorption).
+      const bool infinite = std::isinf(high) && (value == "inf" || value == "infinity");
+      if (infinite)
       {
-        return bad + " (" + (integer ? "a whole number" : "a number") + " in " + Range(name) + ")";
+        v = high;
+      }
+      else if (!ParseNumber(value, v) || (integer && v != std::floor(v)) || v < low || v > high)
+      {
+        std::string why =
+          bad + " (" + (integer ? "a whole number" : "a number") + " in " + Range(name) + ")";
+        if (name == "eta" && ParseNumber(value, v) && v > high)
+        {
+          why += ": eta is air / ice, 1 / the index of refraction; for an index of refraction of " +
+            value + " set ior (--ior " + value + ")";
+        }
+        return why;
       }
       entry->Set(target, v);
       return std::string();
@@ -381,7 +416,7 @@ std::string Apply(const Target& target, const std::string& name, const std::stri
         }
         rest = i < 2 ? rest.substr(comma + 1) : rest;
       }
-      if (name == "color" &&
+      if ((name == "color" || name == "attenuation-color") &&
         (std::min({ v[0], v[1], v[2] }) < 0.0 || std::max({ v[0], v[1], v[2] }) > 1.0))
       {
         return bad + " (red,green,blue each in [0, 1])";

@@ -44,6 +44,8 @@ struct Setting
   Kind Type;
   const char* Help;
   bool Camera; // a camera setting: printed in a preset only when it was given
+  // Another setting's value in other units (eta: 1 / ior): left out of written presets.
+  const char* SynonymOf = nullptr;
 };
 
 // Every setting, in the order --help and --print-preset list them.

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <vector>
 #include <cmath>
+#include <limits>
 
 vtkStandardNewMacro(vtkIceMapper);
 
@@ -67,10 +68,13 @@ bool SetClamped(
 
 //------------------------------------------------------------------------------
 vtkIceMapper::vtkIceMapper()
-  : RefractionRatio(1.0003 / 1.3091)
+  : IndexOfRefraction(1.31)
+  , RefractionRatio(1.0 / 1.31)
   , FresnelPower(3.0)
   , BackNormalWeight(0.33)
   , IceColor{ 1.0, 1.0, 1.0 }
+  , AttenuationColor{ 1.0, 1.0, 1.0 }
+  , AttenuationDistance(std::numeric_limits<double>::infinity())
   , SinglePass(new vtkIceSinglePassInterior)
   , Interior(new vtkIceInterior)
   , Environment(new vtkIceStaticEnvironment)
@@ -149,7 +153,6 @@ double vtkIceMapper::InputExtent()
       this->Modified();                                                                            \
     }                                                                                              \
   }
-vtkIceClampedSetter(RefractionRatio)
 vtkIceClampedSetter(FresnelPower)
 vtkIceClampedSetter(BackNormalWeight)
 vtkIceClampedSetter(CrackIntensity)
@@ -160,28 +163,62 @@ vtkIceClampedSetter(GlisteningScale)
 vtkIceClampedSetter(GlisteningIntensity)
 vtkIceClampedSetter(GlisteningAlignmentGain)
 vtkIceClampedSetter(SnowAmount)
+vtkIceClampedSetter(AttenuationDistance)
 #undef vtkIceClampedSetter
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetIceColor(double red, double green, double blue)
+// A colour property: components clamped to [0, 1], NaN refused with a warning. True if changed.
+#define vtkIceColorSetter(name)                                                                    \
+  void vtkIceMapper::Set##name(double red, double green, double blue)                              \
+  {                                                                                                \
+    if (std::isnan(red) || std::isnan(green) || std::isnan(blue))                                  \
+    {                                                                                              \
+      vtkWarningMacro(<< "Set" #name "(" << red << ", " << green << ", " << blue                   \
+                      << ") ignored: a component is NaN; " #name " stays (" << this->name[0]       \
+                      << ", " << this->name[1] << ", " << this->name[2] << ").");                  \
+      return;                                                                                      \
+    }                                                                                              \
+    bool changed = false;                                                                          \
+    const double color[3] = { red, green, blue };                                                  \
+    for (int i = 0; i < 3; ++i)                                                                    \
+    {                                                                                              \
+      changed = SetClamped(this, #name, color[i], 0.0, 1.0, this->name[i]) || changed;             \
+    }                                                                                              \
+    if (changed)                                                                                   \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }
+vtkIceColorSetter(IceColor) vtkIceColorSetter(AttenuationColor)
+#undef vtkIceColorSetter
+
+  //------------------------------------------------------------------------------
+  void vtkIceMapper::SetIndexOfRefraction(double ior)
 {
-  if (std::isnan(red) || std::isnan(green) || std::isnan(blue))
+  // Both are kept as set, so each reads back exactly what was given.
+  if (SetClamped(this, "IndexOfRefraction", ior, this->GetIndexOfRefractionMinValue(),
+        this->GetIndexOfRefractionMaxValue(), this->IndexOfRefraction))
   {
-    vtkWarningMacro(<< "SetIceColor(" << red << ", " << green << ", " << blue
-                    << ") ignored: a component is NaN; IceColor stays (" << this->IceColor[0]
-                    << ", " << this->IceColor[1] << ", " << this->IceColor[2] << ").");
-    return;
-  }
-  bool changed = false;
-  const double color[3] = { red, green, blue };
-  for (int i = 0; i < 3; ++i)
-  {
-    changed = SetClamped(this, "IceColor", color[i], 0.0, 1.0, this->IceColor[i]) || changed;
-  }
-  if (changed)
-  {
+    this->RefractionRatio = 1.0 / this->IndexOfRefraction;
     this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetRefractionRatio(double eta)
+{
+  if (SetClamped(this, "RefractionRatio", eta, this->GetRefractionRatioMinValue(),
+        this->GetRefractionRatioMaxValue(), this->RefractionRatio))
+  {
+    this->IndexOfRefraction = 1.0 / this->RefractionRatio;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkIceMapper::GetAttenuationDistanceMaxValue()
+{
+  return std::numeric_limits<double>::infinity();
 }
 
 //------------------------------------------------------------------------------
@@ -189,6 +226,14 @@ vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   return actor && actor->GetVisibility() ? vtkIceMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::Absorbs() const
+{
+  return std::isfinite(this->AttenuationDistance) &&
+    (this->AttenuationColor[0] < 1.0 || this->AttenuationColor[1] < 1.0 ||
+      this->AttenuationColor[2] < 1.0);
 }
 
 //------------------------------------------------------------------------------
@@ -216,6 +261,10 @@ int vtkIceMapper::GetFrameNeeds()
   if (this->TwoSidedRefraction)
   {
     needs |= NeedsBackfaceNormals;
+  }
+  if (this->Absorbs())
+  {
+    needs |= NeedsPathLength;
   }
   const int view = this->DebugView;
   if (view == DebugFrontDepth || view == DebugBackDepth ||
@@ -393,6 +442,11 @@ void vtkIceMapper::SetIceShaderParameters(
     static_cast<float>(this->IceColor[1]), static_cast<float>(this->IceColor[2]) };
   program->SetUniform3f("iceTint", tint);
   program->SetUniformf("iceRefractionRatio", static_cast<float>(this->RefractionRatio));
+  const float attenuation[3] = { static_cast<float>(this->AttenuationColor[0]),
+    static_cast<float>(this->AttenuationColor[1]), static_cast<float>(this->AttenuationColor[2]) };
+  program->SetUniform3f("iceAttenuationColor", attenuation);
+  program->SetUniformf(
+    "iceInverseAttenuationDistance", static_cast<float>(1.0 / this->AttenuationDistance));
   program->SetUniformf("iceFresnelPower", static_cast<float>(this->FresnelPower));
   // A dynamic cube map holds the scene at the raw world direction.
   static const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
@@ -626,7 +680,11 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "IndexOfRefraction: " << this->IndexOfRefraction << "\n";
   os << indent << "RefractionRatio: " << this->RefractionRatio << "\n";
+  os << indent << "AttenuationColor: (" << this->AttenuationColor[0] << ", "
+     << this->AttenuationColor[1] << ", " << this->AttenuationColor[2] << ")\n";
+  os << indent << "AttenuationDistance: " << this->AttenuationDistance << "\n";
   os << indent << "FresnelPower: " << this->FresnelPower << "\n";
   os << indent << "BackNormalWeight: " << this->BackNormalWeight << "\n";
   os << indent << "PlacementBounds: " << this->PlacementBounds[0];

@@ -57,15 +57,50 @@ public:
 
   ///@{
   /**
-   * Ratio of refraction indices, from / to (eta of eq 2). Default air/ice 1.0003/1.3091.
-   * Clamped to [0.05, 20]; a value of 1 lets rays pass undeflected. NaN is refused with a
-   * warning (this and the other floating-point parameters clamp as vtkSetClampMacro does, which
-   * would store NaN).
+   * The ice's index of refraction, as glTF's KHR_materials_ior means it (relative to the air
+   * around it). Default 1.31, ice's. The ratio the optics use (eta of eq 2, RefractionRatio) is
+   * its inverse: setting one sets the other. Clamped to [0.05, 20]; 1 lets rays pass undeflected.
+   * NaN is refused with a warning.
+   */
+  virtual void SetIndexOfRefraction(double ior);
+  virtual double GetIndexOfRefractionMinValue() { return 0.05; }
+  virtual double GetIndexOfRefractionMaxValue() { return 20.0; }
+  vtkGetMacro(IndexOfRefraction, double);
+  ///@}
+
+  ///@{
+  /**
+   * Ratio of refraction indices, from / to (eta of eq 2): 1 / IndexOfRefraction, which it sets.
+   * Default 1 / 1.31. Clamped to [0.05, 20]; a value of 1 lets rays pass undeflected. NaN is
+   * refused with a warning (this and the other floating-point parameters clamp as
+   * vtkSetClampMacro does, which would store NaN).
    */
   virtual void SetRefractionRatio(double eta);
   virtual double GetRefractionRatioMinValue() { return 0.05; }
   virtual double GetRefractionRatioMaxValue() { return 20.0; }
   vtkGetMacro(RefractionRatio, double);
+  ///@}
+
+  ///@{
+  /**
+   * Absorption by the distance the light travels in the ice (Beer-Lambert), with glTF
+   * KHR_materials_volume's meaning: white light that has travelled AttenuationDistance in the
+   * ice has the colour AttenuationColor. Defaults: white and infinity (no absorption). The
+   * distance is the refracted ray's path from the front face to the back face behind it, so it
+   * needs vtkIcePass on the renderer (without it the ice does not absorb): with
+   * TwoSidedExitPoint the path to the exit point, otherwise the eye ray's. Colour components are
+   * clamped to [0, 1], the distance to [1e-6, infinity]; NaN is refused with a warning.
+   */
+  virtual void SetAttenuationColor(double red, double green, double blue);
+  virtual void SetAttenuationColor(const double color[3])
+  {
+    this->SetAttenuationColor(color[0], color[1], color[2]);
+  }
+  vtkGetVector3Macro(AttenuationColor, double);
+  virtual void SetAttenuationDistance(double distance);
+  virtual double GetAttenuationDistanceMinValue() { return 1.0e-6; }
+  virtual double GetAttenuationDistanceMaxValue();
+  vtkGetMacro(AttenuationDistance, double);
   ///@}
 
   ///@{
@@ -432,7 +467,8 @@ public:
     NeedsBackfaceNormals = 1,          // two-sided refraction (TwoSidedRefraction)
     NeedsDepthIntervalBeforeScene = 2, // depth debug views; cracks in the back-face normals
     NeedsDepthIntervalForInterior = 4, // its own interval, right before its cracks and air
-    NeedsBackDepthForInterior = 8      // the back-face target's depth (InteriorSinglePass)
+    NeedsBackDepthForInterior = 8,     // the back-face target's depth (InteriorSinglePass)
+    NeedsPathLength = 16               // the back-face target's depth (absorption)
   };
   int GetFrameNeeds();
 
@@ -473,13 +509,17 @@ protected:
   int UsableCrackClipping();
 
   // Whether the interior (cracks or air) is drawn in this frame, and by which method.
+  bool Absorbs() const; // absorption set: a path length is needed
   bool HasInterior() const;
   bool UsesSinglePassInterior() const;
 
+  double IndexOfRefraction;
   double RefractionRatio;
   double FresnelPower;
   double BackNormalWeight;
   double IceColor[3];
+  double AttenuationColor[3];
+  double AttenuationDistance;
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
   int InteriorMethod = InteriorSinglePass;

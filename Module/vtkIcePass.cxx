@@ -226,7 +226,9 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
   {
     this->RenderDepthInterval(iceState);
   }
-  if (needs & (vtkIceMapper::NeedsBackfaceNormals | vtkIceMapper::NeedsBackDepthForInterior))
+  if (needs &
+    (vtkIceMapper::NeedsBackfaceNormals | vtkIceMapper::NeedsBackDepthForInterior |
+      vtkIceMapper::NeedsPathLength))
   {
     this->BackfaceNormalPass->Render(iceState);
     this->BackfaceNormals = this->BackfaceNormalPass->GetNormalTexture();
@@ -340,25 +342,37 @@ bool vtkIcePass::PostReplaceShaderValues(
   }
   using vtkIceShaderSections::Get;
   const int needs = mapper->GetFrameNeeds();
-  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackfaceNormals))
-  {
-    if (mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint)
-    {
-      vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceExitPointFS, "Dec"));
-      vtkIceShaderSections::FillHook(fs, "RefractionDirection", Get(vtkIceExitPointFS, "Impl"));
-    }
-    else
-    {
-      vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
-      vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
-    }
-  }
-  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackDepthForInterior))
-  {
+  // The back-face target's sampler, unless a snippet inserted here declared it already.
+  const auto declareBackNormals = [&fs]() {
     if (fs.find("uniform sampler2D iceBackNormals;") == std::string::npos)
     {
       vtkIceShaderSections::InsertDeclarations(fs, "uniform sampler2D iceBackNormals;\n");
     }
+  };
+  const bool exitPoint = this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackfaceNormals) &&
+    mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint;
+  if (exitPoint)
+  {
+    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceExitPointFS, "Dec"));
+    vtkIceShaderSections::FillHook(fs, "RefractionDirection", Get(vtkIceExitPointFS, "Impl"));
+  }
+  else if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackfaceNormals))
+  {
+    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
+    vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
+  }
+  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsPathLength))
+  {
+    // The exit point's own path; else the eye ray's between the front and back faces.
+    declareBackNormals();
+    vtkIceShaderSections::FillHook(fs, "PathLength",
+      exitPoint ? "icePathLength = iceExitPathLength;"
+                : "icePathLength = iceEyePathLength(e, iceViewDirectionWC, iceViewDepth(),\n"
+                  "      texelFetch(iceBackNormals, iceScreenTexel(), 0).a);");
+  }
+  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackDepthForInterior))
+  {
+    declareBackNormals();
     vtkIceShaderSections::FillHook(fs, "Interior", vtkIceSinglePassInterior::Call());
   }
   const int view = mapper->GetDebugView();

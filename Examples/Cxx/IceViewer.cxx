@@ -38,7 +38,7 @@ const Key Keys[] = {
   { 'g', "glistening on/off", "glistening" },
   { 'd', "dynamic cube map on/off", "cube-map" },
   { 'v', "next debug view", "debug-view" },
-  { '[', "eta down / up ]", "eta" },
+  { '[', "ior down / up ]", "ior" },
   { '-', "milkiness down / up =", "milkiness" },
   { ',', "cracks fewer / more .", nullptr },
   { ';', "snow less / more '", "snow" },
@@ -276,7 +276,7 @@ bool IceViewer::HandleKey(char key)
       break;
     case '[':
     case ']':
-      this->Step("eta", key == '[' ? -0.02 : 0.02);
+      this->Step("ior", key == '[' ? -0.02 : 0.02);
       break;
     case '-':
     case '=':

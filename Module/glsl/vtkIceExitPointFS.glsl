@@ -20,16 +20,19 @@ vec4 iceBackUnder(vec4 clip)
 // the back face under the current exit estimate lies beyond it in view depth (the back face taken
 // as locally facing the camera). At the exit, t refracts about the back normal with 1 / eta;
 // where it cannot (total internal reflection) it is reflected back into the ice and leaves as is.
-vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4 backHere)
+// s, the path from the front to the exit point, is handed out for the absorption.
+vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4 backHere,
+  out float s)
 {
   vec3 t = iceRefract(e, nFront, eta);
+  s = 0.0;
   if (backHere.a <= 0.0)
   {
     return t;
   }
   float depthPerDistance = max(dot(t, iceViewDirectionWC), 0.05);
   float frontDepth = dot(positionWC - iceCameraWC, iceViewDirectionWC);
-  float s = max(backHere.a - frontDepth, 0.0) / depthPerDistance;
+  s = max(backHere.a - frontDepth, 0.0) / depthPerDistance;
   vec4 back = backHere;
   // Clip coordinates are linear along the ray: two products instead of one per step.
   vec4 clipStart = iceWCDCMatrix * vec4(positionWC, 1.0);
@@ -49,4 +52,4 @@ vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4
 }
 //ICE::Impl
     refractedDirection = iceExitPointDirection(e, icePositionWCVSOutput, nFront,
-      iceRefractionRatio, texelFetch(iceBackNormals, iceScreenTexel(), 0));
+      iceRefractionRatio, texelFetch(iceBackNormals, iceScreenTexel(), 0), iceExitPathLength);

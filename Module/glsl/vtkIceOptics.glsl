@@ -29,3 +29,20 @@ float iceFresnel(vec3 e, vec3 n, float power)
 {
   return pow(clamp(1.0 - abs(dot(e, n)), 1.0e-6, 1.0), power);
 }
+
+// Beer-Lambert absorption with glTF KHR_materials_volume's meaning: white light that has travelled
+// the attenuation distance in the ice has the attenuation colour. inverseDistance is 1 / that
+// distance (0: the ice absorbs nothing). The colour is kept above 0 so its logarithm exists.
+vec3 iceTransmittance(float pathLength, vec3 attenuationColor, float inverseDistance)
+{
+  return pow(clamp(attenuationColor, 1.0e-4, 1.0), vec3(pathLength * inverseDistance));
+}
+
+// The eye ray's path through the ice, from the front surface at view depth frontDepth to the back
+// face behind it at backDepth (0: none, no path). View depth grows by e . viewDirection per unit
+// of the ray; the floor keeps a ray grazing the view plane finite.
+float iceEyePathLength(vec3 e, vec3 viewDirection, float frontDepth, float backDepth)
+{
+  return backDepth > 0.0 ? max(backDepth - frontDepth, 0.0) / max(dot(e, viewDirection), 0.05)
+                         : 0.0;
+}

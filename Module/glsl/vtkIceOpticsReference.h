@@ -45,20 +45,42 @@ inline double Fresnel(const Vec3& e, const Vec3& n, double power)
   return std::pow(std::min(1.0, std::max(1.0e-6, 1.0 - std::abs(glm::dot(e, n)))), power);
 }
 
+// Beer-Lambert absorption (iceTransmittance): white light that has travelled the attenuation
+// distance has the attenuation colour; inverseDistance 0 absorbs nothing.
+inline Vec3 Transmittance(double pathLength, const Vec3& attenuationColor, double inverseDistance)
+{
+  return glm::pow(
+    glm::clamp(attenuationColor, Vec3(1.0e-4), Vec3(1.0)), Vec3(pathLength * inverseDistance));
+}
+
+// The eye ray's path through the ice between the view depths of its front and back faces
+// (iceEyePathLength); backDepth 0: no back face, no path.
+inline double EyePathLength(
+  const Vec3& e, const Vec3& viewDirection, double frontDepth, double backDepth)
+{
+  return backDepth > 0.0
+    ? std::max(backDepth - frontDepth, 0.0) / std::max(glm::dot(e, viewDirection), 0.05)
+    : 0.0;
+}
+
 struct Material
 {
-  double RefractionRatio = 1.0003 / 1.3091;
+  double RefractionRatio = 1.0 / 1.31;
   double FresnelPower = 3.0;
   double BackNormalWeight = 0.33;
   Vec3 Tint = Vec3(1.0);
+  Vec3 AttenuationColor = Vec3(1.0);
+  double InverseAttenuationDistance = 0.0;
 };
 
-// Colour of an ice surface point whose refracted ray leaves in `refractedDirection`.
+// Colour of an ice surface point whose refracted ray leaves in `refractedDirection` after a path
+// of `pathLength` in the ice.
 template <typename Environment>
 Vec3 ShadeWithDirection(const Vec3& e, const Vec3& nFront, const Vec3& refractedDirection,
-  const Material& material, const Environment& environment)
+  const Material& material, const Environment& environment, double pathLength = 0.0)
 {
-  const Vec3 refracted = environment(refractedDirection);
+  const Vec3 refracted = environment(refractedDirection) *
+    Transmittance(pathLength, material.AttenuationColor, material.InverseAttenuationDistance);
   const Vec3 reflected = environment(Reflect(e, nFront));
   const double f = std::min(1.0, std::max(0.0, Fresnel(e, nFront, material.FresnelPower)));
   return material.Tint * (refracted + (reflected - refracted) * f);
@@ -93,18 +115,24 @@ struct View
 // TwoSidedExitPoint, as iceExitPointDirection in vtkIceExitPointFS.glsl: the direction leaving
 // the ice for the eye vector e meeting its front at `position` with normal nFront. `backHere` is
 // the back texel under the fragment, `backUnder(point)` the texel under a world point.
+// `pathLength` (when given) receives the distance from the front to the exit point (0 where no
+// back face is known).
 template <typename BackUnder>
 Vec3 ExitPointDirection(const Vec3& e, const Vec3& position, const Vec3& nFront, double eta,
-  const BackTexel& backHere, const View& view, const BackUnder& backUnder)
+  const BackTexel& backHere, const View& view, const BackUnder& backUnder,
+  double* pathLength = nullptr)
 {
   const Vec3 t = Refract(e, nFront, eta);
+  double ignored = 0.0;
+  double& s = pathLength ? *pathLength : ignored;
+  s = 0.0;
   if (backHere.Depth <= 0.0)
   {
     return t;
   }
   const double depthPerDistance = std::max(glm::dot(t, view.Direction), 0.05);
   const double frontDepth = glm::dot(position - view.Position, view.Direction);
-  double s = std::max(backHere.Depth - frontDepth, 0.0) / depthPerDistance;
+  s = std::max(backHere.Depth - frontDepth, 0.0) / depthPerDistance;
   BackTexel back = backHere;
   for (int i = 0; i < 3; ++i)
   {

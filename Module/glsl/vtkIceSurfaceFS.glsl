@@ -13,6 +13,8 @@ vec3 iceEnvironmentColor(vec3 directionWC)
 }
 uniform float iceRefractionRatio;
 uniform vec3 iceTint;
+uniform vec3 iceAttenuationColor;
+uniform float iceInverseAttenuationDistance;
 //ICE::Impl
   {
     vec3 e = iceEyeVectorWC(icePositionWCVSOutput);
@@ -23,8 +25,13 @@ uniform vec3 iceTint;
     vec3 nRefract = nFront;
     //ICEHOOK::RefractionNormal
     vec3 refractedDirection = iceRefract(e, nRefract, iceRefractionRatio);
+    float iceExitPathLength = 0.0;
     //ICEHOOK::RefractionDirection
-    vec3 refracted = iceEnvironmentColor(refractedDirection);
+    // The refracted light's path in the ice, where vtkIcePass knows the back faces (0: none).
+    float icePathLength = 0.0;
+    //ICEHOOK::PathLength
+    vec3 refracted = iceEnvironmentColor(refractedDirection) *
+      iceTransmittance(icePathLength, iceAttenuationColor, iceInverseAttenuationDistance);
     vec3 reflected = iceEnvironmentColor(iceReflect(e, nFront));
     vec3 iceColor = iceTint;
     //ICEHOOK::ScalarColor

@@ -366,6 +366,7 @@ Invisibility MeasureAgainst(vtkTexture* environment, vtkSkybox* skybox)
   renderer->AddActor(skybox);
 
   vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.0); // the sphere the interior pixels are found for
   sphere->SetThetaResolution(128);
   sphere->SetPhiResolution(128);
   vtkNew<vtkIceMapper> mapper;
@@ -396,7 +397,7 @@ Invisibility MeasureAgainst(vtkTexture* environment, vtkSkybox* skybox)
   window->Render();
   result.Invisible = MaskedDifference(result.Background, Capture(window), interior);
 
-  mapper->SetRefractionRatio(1.0003 / 1.3091);
+  mapper->SetIndexOfRefraction(1.31);
   mapper->SetFresnelPower(3.0);
   window->Render();
   result.Visible = MaskedDifference(result.Background, Capture(window), interior);

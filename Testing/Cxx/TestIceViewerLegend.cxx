@@ -94,7 +94,7 @@ int TestIceViewerLegend(int, char*[])
 
   bool ok = true;
   const std::string legend = viewer->GetLegend();
-  ok = Expect(legend.find("[  eta down / up ]") != std::string::npos,
+  ok = Expect(legend.find("[  ior down / up ]") != std::string::npos,
          "the legend names the keys as typed: '[' and ']'") &&
     ok;
 

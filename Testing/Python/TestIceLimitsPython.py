@@ -47,7 +47,7 @@ class Messages:
         self.text = self.window.GetOutput()
 
 
-CLAMPED = ["RefractionRatio", "FresnelPower", "BackNormalWeight", "CrackIntensity", "Milkiness",
+CLAMPED = ["IndexOfRefraction", "RefractionRatio", "AttenuationDistance", "FresnelPower", "BackNormalWeight", "CrackIntensity", "Milkiness",
            "BumpStrength", "BumpScale", "GlisteningScale", "GlisteningIntensity",
            "GlisteningAlignmentGain", "SnowAmount"]
 INTEGERS = {"NumberOfCracks": (0, 1000), "NumberOfAirPlanes": (0, 1000)}
@@ -77,13 +77,15 @@ def parameters():
         set_(2 ** 31 - 1)
         check("%s clamps to [%d, %d]" % (name, low, high), (below, get()) == (low, high),
               "got %s, %s" % (below, get()))
-    with Messages() as messages:
-        mapper.SetIceColor(0.5, math.nan, 0.5)
-    color = mapper.GetIceColor()
-    mapper.SetIceColor(-1.0, 2.0, math.inf)
-    check("IceColor clamps to [0, 1] and refuses NaN",
-          mapper.GetIceColor() == (0.0, 1.0, 1.0) and not any(map(math.isnan, color)) and
-          "NaN" in messages.text, "%s %s" % (color, mapper.GetIceColor()))
+    for name in ("IceColor", "AttenuationColor"):
+        set_, get = getattr(mapper, "Set" + name), getattr(mapper, "Get" + name)
+        with Messages() as messages:
+            set_(0.5, math.nan, 0.5)
+        color = get()
+        set_(-1.0, 2.0, math.inf)
+        check("%s clamps to [0, 1] and refuses NaN" % name,
+              get() == (0.0, 1.0, 1.0) and not any(map(math.isnan, color)) and
+              "NaN" in messages.text, "%s %s" % (color, get()))
 
 
 def polydata(points, polys, arrays=()):

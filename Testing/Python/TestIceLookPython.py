@@ -44,9 +44,10 @@ def test_kinds_help_and_camera():
 
 def test_ranges_are_the_librarys():
     mapper = vtkice.vtkIceMapper()
-    eta = Look.FindSetting("eta")
-    check(Look.GetMinimum(eta) == mapper.GetRefractionRatioMinValue())
-    check(Look.GetMaximum(eta) == mapper.GetRefractionRatioMaxValue())
+    ior = Look.FindSetting("ior")
+    check(Look.GetMinimum(ior) == mapper.GetIndexOfRefractionMinValue())
+    check(Look.GetMaximum(ior) == mapper.GetIndexOfRefractionMaxValue())
+    check(Look.GetMaximum(Look.FindSetting("eta")) == 1.0, "eta: air / ice, up to 1")
     cracks = Look.FindSetting("cracks")
     check(Look.GetMaximum(cracks) == mapper.GetNumberOfCracksMaxValue())
     check(Look.GetMinimum(Look.FindSetting("glistening")) == 0.0, "a switch has no range")
@@ -87,6 +88,8 @@ def test_apply_refuses_bad_values_and_changes_nothing():
     before = mapper.GetRefractionRatio()
     problem = Look.Apply(mapper, ice_pass, cube_maps, camera, "eta", "50")
     check("bad eta '50'" in problem and "[" in problem, problem)
+    problem = Look.Apply(mapper, ice_pass, cube_maps, camera, "eta", "1.31")
+    check("--ior 1.31" in problem, "an eta above 1 names the ior: " + problem)
     check(mapper.GetRefractionRatio() == before)
     check("unknown setting" in Look.Apply(mapper, ice_pass, cube_maps, camera, "etta", "1"))
     check("one of" in Look.Apply(mapper, ice_pass, cube_maps, camera, "interior", "fast"))

@@ -13,7 +13,11 @@ from ice_test_helpers import add_ice, check, grab, mean_difference, sky_renderer
 
 def main():
     mapper = vtkice.vtkIceMapper()
-    check(abs(mapper.GetRefractionRatio() - 1.0003 / 1.3091) < 1e-12)
+    check(abs(mapper.GetIndexOfRefraction() - 1.31) < 1e-12)
+    check(abs(mapper.GetRefractionRatio() - 1.0 / 1.31) < 1e-12, "RefractionRatio is 1 / IOR")
+    mapper.SetIndexOfRefraction(1.5)
+    check(abs(mapper.GetRefractionRatio() - 1.0 / 1.5) < 1e-12, "IOR sets RefractionRatio")
+    mapper.SetIndexOfRefraction(1.31)
     check(mapper.GetFresnelPower() == 3.0)
     check(abs(mapper.GetBackNormalWeight() - 0.33) < 1e-12)
     mapper.SetBackNormalWeight(5.0)
@@ -48,7 +52,7 @@ def main():
     window.Render()
     invisible = mean_difference(background, grab(window), *box)
 
-    mapper.SetRefractionRatio(1.0003 / 1.3091)
+    mapper.SetIndexOfRefraction(1.31)
     mapper.SetFresnelPower(3.0)
     window.Render()
     visible = mean_difference(background, grab(window), *box)

@@ -66,6 +66,8 @@ def options_change_the_picture():
     # (what the option needs to show, the option, whether only the ice may change)
     cases = [
         ([], ["--eta", "0.9"], True),
+        ([], ["--ior", "1.5"], True),
+        ([], ["--attenuation-distance", "0.5", "--attenuation-color", "0.4,0.7,0.9"], True),
         ([], ["--fresnel-power", "1"], True),
         ([], ["--color", "0.6,0.8,1"], True),
         ([], ["--no-two-sided"], True),
@@ -130,7 +132,10 @@ def compare(default, ice, args, ice_only, picture):
 def bad_values_are_refused():
     cases = [
         (["--milkiness", "2"], "[0, 1]"),
-        (["--eta", "0"], "[0.05, 20]"),
+        (["--eta", "0"], "[0.05, 1]"),
+        (["--eta", "1.31"], "for an index of refraction of 1.31 set ior (--ior 1.31)"),
+        (["--ior", "0"], "[0.05, 20]"),
+        (["--attenuation-distance", "0"], "[1e-06, inf]"),
         (["--cracks", "5000"], "[0, 1000]"),
         (["--cracks", "2.5"], "a whole number in [0, 1000]"),
         (["--cube-map-size", "4"], "[8, 4096]"),
