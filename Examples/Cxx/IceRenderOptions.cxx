@@ -14,6 +14,9 @@
 #include <unistd.h>
 #include <vector>
 
+// The looks in Examples/Presets, as --help and a refused --preset name them.
+#define VTKICE_SHIPPED_PRESETS "clear, ice-cube, lake, glacier, frosted, snow"
+
 namespace IceRenderOptions
 {
 namespace
@@ -35,8 +38,8 @@ const char* const Usage =
   "  --turntable N  N images around the model, OUT-0001.png ... (and OUT.mp4 with ffmpeg);\n"
   "                 N in [1, 3600]\n"
   "  --rate FPS     frames per second of the turntable's video, in [1, 240], default 24\n"
-  "  --preset     a look: a shipped one (clear, glacier, frosted, snow) or a file of\n"
-  "               NAME = VALUE lines; options on the command line override it\n"
+  "  --preset     a look: a shipped one (" VTKICE_SHIPPED_PRESETS ")\n"
+  "               or a file of NAME = VALUE lines; options on the command line override it\n"
   "  --print-preset  print the effective look as a preset and exit\n"
   "  --fit        frame the ice: the camera keeps its direction and moves to show it whole\n"
   "  --backend  x (X display), egl or osmesa (no X needed); default $VTKICE_BACKEND or auto:\n"
@@ -340,8 +343,8 @@ int Parse(int argc, char* argv[], Options& options)
         const std::string path = FindPreset(text);
         if (path.empty())
         {
-          return Fail("no preset '" + text +
-              "' (a file, or one of the shipped clear, glacier, frosted, snow)",
+          return Fail(
+            "no preset '" + text + "' (a file, or one of the shipped " VTKICE_SHIPPED_PRESETS ")",
             2);
         }
         preset.clear();

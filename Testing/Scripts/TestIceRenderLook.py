@@ -148,7 +148,7 @@ def bad_values_are_refused():
         (["--view-up", "0,0,0"], "not 0,0,0"),
         (["--view-angle", "180"], "[1, 179]"),
         (["--turntable", "0"], "[1, 3600]"),
-        (["--preset", "no-such-look"], "shipped clear, glacier, frosted, snow"),
+        (["--preset", "no-such-look"], "shipped clear, ice-cube, lake, glacier, frosted, snow"),
         (["--no-eta"], "unknown argument '--no-eta'"),
     ]
     for args, expected in cases:
@@ -169,7 +169,7 @@ def bad_values_are_refused():
 
 
 def presets_round_trip():
-    for name in ("clear", "glacier", "frosted", "snow"):
+    for name in ("clear", "ice-cube", "lake", "glacier", "frosted", "snow"):
         shipped = render("preset-" + name, *BASE, "--preset", name)
         printed = run(*BASE, "--preset", name, "--print-preset")
         path = os.path.join(WORK, name + "-printed.ice")
