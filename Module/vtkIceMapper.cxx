@@ -332,6 +332,7 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   {
     this->NormalMap->Render(ren);
   }
+  this->WarnSettingsWithoutEffect(pass != nullptr);
   this->Superclass::RenderPieceStart(ren, act);
   // The closure check costs about a frame of a large input (1M triangles: 0.3-0.7 s), once per
   // input: a still input pays it at its second frame in the main scene, an input changed every
@@ -350,6 +351,24 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   if (cull)
   {
     this->Culling->Begin(ren);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::WarnSettingsWithoutEffect(bool withPass)
+{
+  if (this->SnowAmount > 0.0 && !this->Glistening && !this->WarnedSnowWithoutGlistening)
+  {
+    vtkWarningMacro(<< "SnowAmount " << this->SnowAmount
+                    << " shows nothing: the glistening part draws the snow. Turn Glistening on "
+                       "to see it.");
+    this->WarnedSnowWithoutGlistening = true;
+  }
+  if (this->Absorbs() && !withPass && !this->WarnedAbsorptionWithoutPass)
+  {
+    vtkWarningMacro(<< "AttenuationColor and AttenuationDistance show nothing without vtkIcePass "
+                       "on the renderer: its back faces give the path in the ice.");
+    this->WarnedAbsorptionWithoutPass = true;
   }
 }
 

@@ -87,7 +87,8 @@ public:
    * KHR_materials_volume's meaning: white light that has travelled AttenuationDistance in the
    * ice has the colour AttenuationColor. Defaults: white and infinity (no absorption). The
    * distance is the refracted ray's path from the front face to the back face behind it, so it
-   * needs vtkIcePass on the renderer (without it the ice does not absorb): with
+   * needs vtkIcePass on the renderer (without it the ice does not absorb, and the mapper says
+   * so once): with
    * TwoSidedExitPoint the path to the exit point, otherwise the eye ray's. Colour components are
    * clamped to [0, 1], the distance to [1e-6, infinity]; NaN is refused with a warning.
    */
@@ -383,7 +384,7 @@ public:
   ///@{
   /**
    * With Glistening: 0 gives ice, 1 snow (white, diffuse), values between blend the two looks.
-   * Default 0; clamped to [0, 1].
+   * Default 0; clamped to [0, 1]. Snow without Glistening shows nothing: the mapper says so once.
    */
   virtual void SetSnowAmount(double snowAmount);
   virtual double GetSnowAmountMinValue() { return 0.0; }
@@ -564,6 +565,10 @@ protected:
   // What InputPrepared and UsableCrackClipping found about the current input.
   bool InputFlat = false;
   bool WarnedOpenInput = false;
+  // A setting that cannot show is said once per mapper (WarnSettingsWithoutEffect).
+  void WarnSettingsWithoutEffect(bool withPass);
+  bool WarnedSnowWithoutGlistening = false;
+  bool WarnedAbsorptionWithoutPass = false;
   // How the input encloses a volume (vtkIceSurfaceCheck::CheckClosure), found when Geometry
   // clipping or culling first needs it: its open edges, whether it is closed and faces outward.
   void CheckInputClosure();

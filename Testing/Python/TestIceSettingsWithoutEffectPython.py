@@ -1,0 +1,82 @@
+"""A setting that cannot show says so, once: snow needs Glistening, absorption needs vtkIcePass
+(the back faces give the path in the ice). Where it shows, nothing is said."""
+import sys
+
+import vtk
+import vtkice
+
+from ice_test_helpers import add_ice, check, sky_renderer
+
+
+def warnings_of_one_render(configure, with_pass):
+    """The warning text of rendering a sphere whose mapper `configure` set up, twice."""
+    renderer = sky_renderer(32)
+    mapper, _ = add_ice(renderer, vtk.vtkSphereSource())
+    mapper.SetNumberOfCracks(0)
+    mapper.SetNumberOfAirPlanes(0)
+    configure(mapper)
+    if with_pass:
+        renderer.SetPass(vtkice.vtkIcePass())
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(64, 64)
+    window.AddRenderer(renderer)
+    output = vtk.vtkStringOutputWindow()
+    previous = vtk.vtkOutputWindow.GetInstance()
+    vtk.vtkOutputWindow.SetInstance(output)
+    vtk.vtkLogger.SetStderrVerbosity(vtk.vtkLogger.VERBOSITY_OFF)
+    try:
+        window.Render()
+        window.Render()
+    finally:
+        vtk.vtkOutputWindow.SetInstance(previous)
+        vtk.vtkLogger.SetStderrVerbosity(vtk.vtkLogger.VERBOSITY_INFO)
+    window.Finalize()
+    return output.GetOutput()
+
+
+def snow(mapper):
+    mapper.SetSnowAmount(0.6)
+
+
+def snow_and_glistening(mapper):
+    mapper.SetSnowAmount(0.6)
+    mapper.GlisteningOn()
+
+
+def absorption(mapper):
+    mapper.SetAttenuationColor(0.5, 0.7, 0.9)
+    mapper.SetAttenuationDistance(1.0)
+
+
+def test_snow_without_glistening_warns_once():
+    text = warnings_of_one_render(snow, with_pass=True)
+    check(text.count("shows nothing") == 1 and "Glistening on" in text, text)
+
+
+def test_snow_with_glistening_says_nothing():
+    text = warnings_of_one_render(snow_and_glistening, with_pass=True)
+    check("nothing" not in text, text)
+
+
+def test_absorption_without_the_pass_warns_once():
+    text = warnings_of_one_render(absorption, with_pass=False)
+    check(text.count("show nothing") == 1 and "vtkIcePass" in text, text)
+
+
+def test_absorption_with_the_pass_says_nothing():
+    text = warnings_of_one_render(absorption, with_pass=True)
+    check("nothing" not in text, text)
+
+
+def main():
+    for test in (test_snow_without_glistening_warns_once, test_snow_with_glistening_says_nothing,
+                 test_absorption_without_the_pass_warns_once,
+                 test_absorption_with_the_pass_says_nothing):
+        test()
+        print("ok   " + test.__name__)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
