@@ -536,6 +536,13 @@ void vtkIceCubeMapPass::Render(const vtkRenderState* s)
       this->Internals->RenderFace(
         this, renderer, *update.Map, scene, update.Center, highDynamicRange);
     }
+    if (faces > 0)
+    {
+      // A prop's first render makes what it lacked (an actor's vtkProperty, its textures): that
+      // changes its redraw time but not the picture, so the scene is signed as just drawn.
+      update.Map->Signature =
+        SceneSignature(renderer, faceBackground, scene, update.Center, this->FaceSize);
+    }
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
 }

@@ -13,6 +13,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCubeSource.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
@@ -187,6 +188,15 @@ bool UpdateModes()
   {
     Room room(5.0);
     vtkIceCubeMapPass* pass = room.CubeMapPass;
+    // A prop whose vtkProperty its first render makes (a user's actor, never given a colour):
+    // that is no change of the scene.
+    vtkNew<vtkCubeSource> box;
+    vtkNew<vtkPolyDataMapper> boxMapper;
+    boxMapper->SetInputConnection(box->GetOutputPort());
+    vtkNew<vtkActor> plain;
+    plain->SetMapper(boxMapper);
+    plain->SetPosition(3.0, 0.0, 0.0);
+    room.Renderer->AddActor(plain);
     room.Window->Render();
     ok = Expect(pass->GetNumberOfFaceRenders() == 6, "on change: first frame renders 6 faces",
            pass->GetNumberOfFaceRenders()) &&
