@@ -105,6 +105,14 @@ std::vector<Entry> MakeEntries()
     name, help, { __VA_ARGS__ },                                                                   \
     [](const Target& t) { return static_cast<double>(t.Mapper->Get##Property()); },                \
     [](const Target& t, double v) { t.Mapper->Set##Property(static_cast<int>(v)); })
+#define ICE_MAPPER_COLOR(name, help, Property)                                                     \
+  {                                                                                                \
+    Entry color;                                                                                   \
+    color.Info = { name, Kind::Vector, help, false };                                              \
+    color.GetVector = [](const Target& t, double* v) { t.Mapper->Get##Property(v); };              \
+    color.SetVector = [](const Target& t, const double* v) { t.Mapper->Set##Property(v); };        \
+    e.push_back(color);                                                                            \
+  }
   const Bound anyLow = [](vtkIceMapper*, vtkIceCubeMapPass*) { return -2147483648.0; };
   const Bound anyHigh = [](vtkIceMapper*, vtkIceCubeMapPass*) { return 2147483647.0; };
 
@@ -119,26 +127,14 @@ std::vector<Entry> MakeEntries()
     [](const Target& t) { return t.Mapper->GetRefractionRatio(); },
     [](const Target& t, double v) { t.Mapper->SetRefractionRatio(v); });
   e.back().Info.SynonymOf = "ior";
-  {
-    Entry color;
-    color.Info = { "attenuation-color", Kind::Vector,
-      "colour white light has after attenuation-distance in the ice, red,green,blue in [0, 1]",
-      false };
-    color.GetVector = [](const Target& t, double* v) { t.Mapper->GetAttenuationColor(v); };
-    color.SetVector = [](const Target& t, const double* v) { t.Mapper->SetAttenuationColor(v); };
-    e.push_back(color);
-  }
+  ICE_MAPPER_COLOR("attenuation-color",
+    "colour white light has after attenuation-distance in the ice, red,green,blue in [0, 1]",
+    AttenuationColor);
   ICE_MAPPER_NUMBER("attenuation-distance",
     "distance in the ice after which light has attenuation-color (inf: no absorption)",
     AttenuationDistance);
   ICE_MAPPER_NUMBER("fresnel-power", "exponent P of the Fresnel term (eq 4)", FresnelPower);
-  {
-    Entry color;
-    color.Info = { "color", Kind::Vector, "ice colour, red,green,blue each in [0, 1]", false };
-    color.GetVector = [](const Target& t, double* v) { t.Mapper->GetIceColor(v); };
-    color.SetVector = [](const Target& t, const double* v) { t.Mapper->SetIceColor(v); };
-    e.push_back(color);
-  }
+  ICE_MAPPER_COLOR("color", "ice colour, red,green,blue each in [0, 1]", IceColor);
   ICE_MAPPER_SWITCH(
     "two-sided", "refract through the back faces too (with the pass)", TwoSidedRefraction);
   ICE_MAPPER_CHOICE("two-sided-method", "how two-sided refraction goes through the ice",
@@ -166,7 +162,8 @@ std::vector<Entry> MakeEntries()
   ICE_MAPPER_NUMBER("bumps", "strength of the surface bumps (0: smooth)", BumpStrength);
   ICE_MAPPER_NUMBER("bump-scale", "size of the bumps, a fraction of the model", BumpScale);
   ICE_MAPPER_SWITCH("glistening", "direct light, rim light and crack glints", Glistening);
-  ICE_MAPPER_NUMBER("snow", "snow cover where the surface faces up (with glistening)", SnowAmount);
+  ICE_MAPPER_NUMBER(
+    "snow", "snow over the whole surface, 0 ice to 1 snow (with glistening)", SnowAmount);
   ICE_MAPPER_NUMBER("glistening-scale", "size of the glints", GlisteningScale);
   ICE_MAPPER_NUMBER("glistening-intensity", "brightness of the glints", GlisteningIntensity);
   ICE_MAPPER_NUMBER(
@@ -211,6 +208,7 @@ std::vector<Entry> MakeEntries()
 #undef ICE_MAPPER_INTEGER
 #undef ICE_MAPPER_SWITCH
 #undef ICE_MAPPER_CHOICE
+#undef ICE_MAPPER_COLOR
 
   auto vector = [&e](const char* name, const char* help, void (vtkCamera::*get)(double[3]),
                   void (vtkCamera::*set)(const double[3])) {
