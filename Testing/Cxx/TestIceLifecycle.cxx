@@ -38,6 +38,8 @@
 #include <initializer_list>
 #include <iostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -648,17 +650,45 @@ bool Translucency(bool depthPeeling)
 }
 }
 
-int TestIceLifecycle(int, char*[])
+// One behaviour per ctest test: --case NAME (Testing/Cxx/CMakeLists.txt lists them); without
+// it, every case in turn.
+int TestIceLifecycle(int argc, char* argv[])
 {
-  bool ok = CloseAndReopen(vtkIceMapper::InteriorPaperPasses);
-  ok = CloseAndReopen(vtkIceMapper::InteriorSinglePass) && ok;
-  ok = DeletedPassLeavesNothing() && ok;
-  ok = TwoWindows() && ok;
-  ok = Layers() && ok;
-  ok = Viewports() && ok;
-  ok = Visibility() && ok;
-  ok = SharedMapper() && ok;
-  ok = Translucency(false) && ok;
-  ok = Translucency(true) && ok;
+  const std::vector<std::pair<std::string, std::function<bool()>>> cases = {
+    { "close-reopen-paper-passes",
+      [] { return CloseAndReopen(vtkIceMapper::InteriorPaperPasses); } },
+    { "close-reopen-single-pass", [] { return CloseAndReopen(vtkIceMapper::InteriorSinglePass); } },
+    { "deleted-pass", DeletedPassLeavesNothing },
+    { "two-windows", TwoWindows },
+    { "layers", Layers },
+    { "viewports", Viewports },
+    { "visibility", Visibility },
+    { "shared-mapper", SharedMapper },
+    { "translucency-oit", [] { return Translucency(false); } },
+    { "translucency-depth-peeling", [] { return Translucency(true); } },
+  };
+  std::string only;
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::string(argv[i]) == "--case")
+    {
+      only = argv[i + 1];
+    }
+  }
+  bool ok = true;
+  bool found = only.empty();
+  for (const auto& entry : cases)
+  {
+    if (only.empty() || only == entry.first)
+    {
+      found = true;
+      ok = entry.second() && ok;
+    }
+  }
+  if (!found)
+  {
+    std::cerr << "TestIceLifecycle: no case '" << only << "'\n";
+    return EXIT_FAILURE;
+  }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
