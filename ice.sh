@@ -11,6 +11,9 @@
 #   ./ice.sh lane trixie|sid [ctest opts] the VTK stage on Debian 13 (VTK 9.3) or sid (VTK 9.6) in a
 #                                         chroot made with mmdebstrap, then PyVista from Debian,
 #                                         then the ParaView stage on its ParaView (5.13, 6.1)
+#   ./ice.sh web [--port N]               the web viewer (Examples/Web) on http://127.0.0.1:N/ (8080),
+#                                         rendered through EGL; makes the wheel's venv, SDK and
+#                                         pip install . where missing, adds its trame packages
 #   ./ice.sh vtk-sdk PREFIX               the SDK of the vtk wheel in VTKICE_PYTHON, made from
 #                                         VTKICE_VTK_SOURCE, for CMAKE_PREFIX_PATH=PREFIX pip install .
 #   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~15 min)
@@ -118,6 +121,12 @@ case "$command" in
   wheel)
     exec bash .ci/wheel.sh "$@"
     ;;
+  web)
+    # The wheel stage's environment (.ci/wheel-env.sh), then the trame app (Documentation/web.md).
+    bash .ci/install-deps.sh
+    bash .ci/wheel-env.sh --web
+    exec "${VTKICE_WHEEL_DIR:-build-wheel}/venv/bin/python" Examples/Web/ice_web.py "$@"
+    ;;
   vtk-sdk)
     exec bash .ci/vtk-sdk.sh "$@"
     ;;
@@ -140,7 +149,7 @@ case "$command" in
       "| ./ice.sh test-vtk [ctest options]" \
       "| ./ice.sh fuzz [seconds] | ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
-      "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options]" \
+      "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options] | ./ice.sh web [--port N]" \
       "| ./ice.sh vtk-sdk PREFIX | ./ice.sh lane trixie|sid [ctest options]" >&2
     exit 2
     ;;

@@ -6,6 +6,8 @@
 #   .ci/install-deps.sh            Debian's VTK 9.1 and everything the main build and tests use
 #   .ci/install-deps.sh paraview   Debian's ParaView 5.11 (with its own VTK 9.2) for the plugin
 #   .ci/install-deps.sh fuzz       the first list and clang with libFuzzer (./ice.sh fuzz)
+#   .ci/install-deps.sh web        the first list and Debian's Chromium with its WebDriver: the web
+#                                  viewer's browser tests (./ice.sh wheel, ./ice.sh web)
 # The two VTKs cannot be installed together: apt replaces one by the other, so each stage calls
 # this first and finds what it needs whatever ran before.
 set -euo pipefail
@@ -27,6 +29,9 @@ else
   )
   if [ "${1:-}" = fuzz ]; then
     packages+=(clang-14 libclang-rt-14-dev)
+  fi
+  if [ "${1:-}" = web ]; then
+    packages+=(chromium chromium-driver)
   fi
 fi
 # VTKICE_SKIP_PACKAGES: packages a Debian suite does not have (sid: libosmesa6-dev).
