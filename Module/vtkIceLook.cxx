@@ -98,6 +98,13 @@ bool vtkIceLook::IsCameraSetting(int i)
 }
 
 //------------------------------------------------------------------------------
+const char* vtkIceLook::GetSynonymOf(int i)
+{
+  const IceLook::Setting* setting = At(i);
+  return setting ? setting->SynonymOf : nullptr;
+}
+
+//------------------------------------------------------------------------------
 double vtkIceLook::GetMinimum(int i)
 {
   double low = 0.0, high = 0.0;

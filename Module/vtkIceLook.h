@@ -62,6 +62,12 @@ public:
    */
   static bool IsCameraSetting(int i);
 
+  /**
+   * The setting whose value the i-th gives in other units ("eta" is 1 / "ior"), or null: a user
+   * interface shows one of the two; written presets leave the synonym out.
+   */
+  static const char* GetSynonymOf(int i);
+
   ///@{
   /**
    * The library's range of a "number" or "integer" setting; 0 for other kinds.

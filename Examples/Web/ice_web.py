@@ -8,6 +8,7 @@ the same model as a plain surface, a control for every setting of the look (vtki
 the table of ice-render's options, with its ranges, choices and help), a screenshot button.
 """
 import argparse
+import math
 import os
 import tempfile
 
@@ -37,7 +38,7 @@ def state_value(setting, text):
     kind = setting["kind"]
     if kind == "switch":
         return text == "on"
-    if kind == "number":
+    if kind == "number" and not math.isinf(setting["max"]):
         return float(text)
     if kind == "integer":
         return int(float(text))
@@ -177,7 +178,9 @@ class IceWebApp:
         elif kind == "choice":
             v3.VSelect(v_model=(key,), items=(key + "_choices", setting["choices"]), **common)
         elif kind == "vector" or (kind == "integer" and
-                                  setting["max"] - setting["min"] > SLIDER_STEPS):
+                                  setting["max"] - setting["min"] > SLIDER_STEPS) or \
+                math.isinf(setting["max"]):
+            # An unbounded number (attenuation-distance up to inf) is typed: "inf" or a value.
             v3.VTextField(v_model_lazy=(key,), **common)
         else:
             step = 1 if kind == "integer" else (setting["max"] - setting["min"]) / 200

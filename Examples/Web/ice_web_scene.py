@@ -33,10 +33,11 @@ Look = vtkice.vtkIceLook
 
 
 def look_settings():
-    """The look's settings as the table lists them, without the camera's (the view moves it)."""
+    """The look's settings as the table lists them, without the camera's (the view moves it) and
+    without synonyms (eta: ior in other units)."""
     settings = []
     for i in range(Look.GetNumberOfSettings()):
-        if Look.IsCameraSetting(i):
+        if Look.IsCameraSetting(i) or Look.GetSynonymOf(i):
             continue
         settings.append({
             "name": Look.GetName(i), "kind": Look.GetKind(i), "help": Look.GetHelp(i),

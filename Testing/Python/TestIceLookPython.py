@@ -40,6 +40,8 @@ def test_kinds_help_and_camera():
     check(all(Look.GetHelp(i) for i in range(Look.GetNumberOfSettings())), "every one has help")
     check(Look.IsCameraSetting(Look.FindSetting("camera-position")))
     check(not Look.IsCameraSetting(Look.FindSetting("eta")))
+    check(Look.GetSynonymOf(Look.FindSetting("eta")) == "ior", "eta is 1 / ior")
+    check(Look.GetSynonymOf(Look.FindSetting("ior")) is None)
 
 
 def test_ranges_are_the_librarys():

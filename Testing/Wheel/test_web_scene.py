@@ -17,8 +17,9 @@ def test_controls_are_the_tables_look_settings():
     names = [s["name"] for s in ice_web_scene.look_settings()]
     Look = vtkice.vtkIceLook
     table = [Look.GetName(i) for i in range(Look.GetNumberOfSettings())
-             if not Look.IsCameraSetting(i)]
+             if not Look.IsCameraSetting(i) and not Look.GetSynonymOf(i)]
     assert names == table and "cracks" in names and "camera-position" not in names
+    assert "ior" in names and "eta" not in names, "one control for ior and its synonym eta"
 
 
 def test_obj_upload_is_read_and_framed(tmp_path):
