@@ -20,6 +20,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 
+#include <limits>
+
 vtkStandardNewMacro(vtkIceRepresentation);
 
 //------------------------------------------------------------------------------
@@ -157,7 +159,7 @@ int vtkIceRepresentation::ProcessViewRequest(
     this->ForEachIceMapper([v](vtkIceMapper* m) { m->Set##name(value); });                         \
   }
 
-vtkIceForwardMacro(RefractionRatio, double, v);
+vtkIceForwardMacro(IndexOfRefraction, double, v);
 vtkIceForwardMacro(FresnelPower, double, v);
 vtkIceForwardMacro(BackNormalWeight, double, v);
 vtkIceForwardMacro(TwoSidedRefraction, int, v != 0);
@@ -179,6 +181,33 @@ vtkIceForwardMacro(InteriorMethod, int, v);
 void vtkIceRepresentation::SetIceColor(double red, double green, double blue)
 {
   this->ForEachIceMapper([=](vtkIceMapper* m) { m->SetIceColor(red, green, blue); });
+}
+
+void vtkIceRepresentation::SetAttenuationColor(double red, double green, double blue)
+{
+  this->ForEachIceMapper([=](vtkIceMapper* m) { m->SetAttenuationColor(red, green, blue); });
+}
+
+//------------------------------------------------------------------------------
+void vtkIceRepresentation::SetAbsorption(int value)
+{
+  this->Absorption = value != 0;
+  this->PushAttenuationDistance();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceRepresentation::SetAttenuationDistance(double value)
+{
+  this->AttenuationDistance = value;
+  this->PushAttenuationDistance();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceRepresentation::PushAttenuationDistance()
+{
+  const double distance =
+    this->Absorption ? this->AttenuationDistance : std::numeric_limits<double>::infinity();
+  this->ForEachIceMapper([distance](vtkIceMapper* m) { m->SetAttenuationDistance(distance); });
 }
 
 //------------------------------------------------------------------------------

@@ -47,11 +47,22 @@ public:
   /**
    * Forwarded to both vtkIceMappers (see vtkIceMapper for meanings and ranges).
    */
-  void SetRefractionRatio(double value);
+  void SetIndexOfRefraction(double value);
   void SetFresnelPower(double value);
   void SetBackNormalWeight(double value);
   void SetTwoSidedRefraction(int value);
   void SetIceColor(double red, double green, double blue);
+  void SetAttenuationColor(double red, double green, double blue);
+  ///@}
+
+  ///@{
+  /**
+   * Absorption by the path in the ice: off (the default) gives the mappers an infinite
+   * AttenuationDistance, on the distance set here (default 1). ParaView's properties cannot hold
+   * the mapper's infinity, hence the switch.
+   */
+  void SetAbsorption(int value);
+  void SetAttenuationDistance(double value);
   void SetNumberOfCracks(int value);
   void SetCrackSeed(int value);
   void SetCrackIntensity(double value);
@@ -94,6 +105,11 @@ private:
 
   template <typename Setter>
   void ForEachIceMapper(Setter setter);
+
+  // The mappers' AttenuationDistance: infinite while Absorption is off.
+  void PushAttenuationDistance();
+  bool Absorption = false;
+  double AttenuationDistance = 1.0;
 
   vtkNew<vtkCompositeDataGeometryFilter> Merge;
   vtkNew<vtkCompositeDataGeometryFilter> MergeLOD;

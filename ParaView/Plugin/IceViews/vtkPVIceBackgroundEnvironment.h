@@ -6,7 +6,7 @@
  * would refract vtkIceMapper's built-in sky, a landscape that is not in the view. This cube map
  * holds what the view's background shows in each direction instead: its single colour, or its
  * gradient (Background at the bottom of the viewport, Background2 at the top) where the camera
- * sees it, so ice with RefractionRatio 1 is invisible against the background (perspective
+ * sees it, so ice with IndexOfRefraction 1 is invisible against the background (perspective
  * camera). Directions outside the view continue the gradient's end colours.
  *
  * Update() reads the renderer's background and camera (call it while the renderer holds the

@@ -153,7 +153,7 @@ h.check((d[inside] > 8).mean() > 0.9, "parallel: ice differs from Surface inside
 h.check(d[~h.grow(inside, 1)].max() == 0, "parallel: nothing changes outside")
 Delete(view)
 
-# 5. The ice lines up with ParaView's skybox: with RefractionRatio 1 and no reflection it is
+# 5. The ice lines up with ParaView's skybox: with IndexOfRefraction 1 and no reflection it is
 # invisible against the background of the same panorama, an 8-bit PNG (sRGB) or an HDR image.
 for name, make_texture in (("png", h.write_environment), ("hdr", h.write_hdr_environment)):
     view = h.make_view()
@@ -165,7 +165,7 @@ for name, make_texture in (("png", h.write_environment), ("hdr", h.write_hdr_env
     display.Representation = "Ice"
     h.clean_ice(display)
     visible = h.capture(view, os.path.join(out, "skybox-%s-ice.png" % name))
-    display.RefractionRatio = 1.0
+    display.IndexOfRefraction = 1.0
     display.FresnelPower = 1.0e6
     invisible = h.capture(view, os.path.join(out, "skybox-%s-invisible.png" % name))
     Hide(sphere, view)

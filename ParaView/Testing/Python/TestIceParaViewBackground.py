@@ -27,7 +27,7 @@ for kind in ("RenderView", "IceView"):
         surface = h.capture(view, os.path.join(out, name + "-surface.png"))
         display.Representation = "Ice"
         h.clean_ice(display)
-        display.RefractionRatio = 1.0
+        display.IndexOfRefraction = 1.0
         display.FresnelPower = 1.0e6
         invisible = h.capture(view, os.path.join(out, name + "-invisible.png"))
         # The ice is drawn: tinted, it shows.

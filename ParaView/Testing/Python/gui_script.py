@@ -16,4 +16,4 @@ Render(view)
 with open(os.environ["VTKICE_GUI_RESULT"], "w") as result:
     result.write("representations: %s\n" % ", ".join(available))
     result.write("representation: %s\n" % display.Representation)
-    result.write("ice properties: %s\n" % ("RefractionRatio" in display.ListProperties()))
+    result.write("ice properties: %s\n" % ("IndexOfRefraction" in display.ListProperties()))
