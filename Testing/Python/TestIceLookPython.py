@@ -9,7 +9,7 @@ import tempfile
 import vtk
 import vtkice
 
-from ice_test_helpers import check
+from ice_test_helpers import check, run_tests
 
 Look = vtkice.vtkIceLook
 PRESETS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples",
@@ -114,17 +114,7 @@ def test_apply_preset():
 
 
 def main():
-    tests = [value for name, value in sorted(globals().items()) if name.startswith("test_")]
-    failed = 0
-    for test in tests:
-        try:
-            test()
-            print("ok   " + test.__name__)
-        except AssertionError as error:
-            failed += 1
-            print("FAIL %s: %s" % (test.__name__, error))
-    print("%d passed, %d failed" % (len(tests) - failed, failed))
-    return 1 if failed else 0
+    return run_tests(globals())
 
 
 if __name__ == "__main__":

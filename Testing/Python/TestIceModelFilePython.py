@@ -8,7 +8,7 @@ import tempfile
 
 import vtkice
 
-from ice_test_helpers import check
+from ice_test_helpers import check, run_tests
 
 Check = vtkice.vtkIceModelFile.CheckFile
 
@@ -58,18 +58,8 @@ def test_printable(folder):
 
 
 def main():
-    tests = [value for name, value in sorted(globals().items()) if name.startswith("test_")]
-    failed = 0
     with tempfile.TemporaryDirectory() as folder:
-        for test in tests:
-            try:
-                test(folder)
-                print("ok   " + test.__name__)
-            except AssertionError as error:
-                failed += 1
-                print("FAIL %s: %s" % (test.__name__, error))
-    print("%d passed, %d failed" % (len(tests) - failed, failed))
-    return 1 if failed else 0
+        return run_tests(globals(), folder)
 
 
 if __name__ == "__main__":

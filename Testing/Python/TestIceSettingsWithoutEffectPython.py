@@ -5,7 +5,7 @@ import sys
 import vtk
 import vtkice
 
-from ice_test_helpers import add_ice, check, sky_renderer
+from ice_test_helpers import add_ice, check, run_tests, sky_renderer
 
 
 def warnings_of_one_render(configure, with_pass):
@@ -70,12 +70,7 @@ def test_absorption_with_the_pass_says_nothing():
 
 
 def main():
-    for test in (test_snow_without_glistening_warns_once, test_snow_with_glistening_says_nothing,
-                 test_absorption_without_the_pass_warns_once,
-                 test_absorption_with_the_pass_says_nothing):
-        test()
-        print("ok   " + test.__name__)
-    return 0
+    return run_tests(globals())
 
 
 if __name__ == "__main__":

@@ -60,3 +60,19 @@ def add_ice(renderer, source, mapper=None):
     ice.SetMapper(mapper)
     renderer.AddActor(ice)
     return mapper, ice
+
+
+def run_tests(namespace, *arguments):
+    """Runs every function of `namespace` (a module's globals()) whose name starts with test_,
+    in name order, each with `arguments`; prints ok or FAIL per test. Returns the exit status."""
+    tests = [value for name, value in sorted(namespace.items()) if name.startswith("test_")]
+    failed = 0
+    for test in tests:
+        try:
+            test(*arguments)
+            print("ok   " + test.__name__)
+        except AssertionError as error:
+            failed += 1
+            print("FAIL %s: %s" % (test.__name__, error))
+    print("%d passed, %d failed" % (len(tests) - failed, failed))
+    return 1 if failed else 0
