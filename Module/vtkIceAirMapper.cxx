@@ -2,6 +2,8 @@
 
 #include "vtkIceAirFS.h"
 #include "vtkIceAirVS.h"
+#include "vtkIceInteriorLook.h"
+#include "vtkIceInteriorLookFS.h"
 #include "vtkIceShaderSections.h"
 
 #include "vtkDataObject.h"
@@ -64,7 +66,8 @@ void vtkIceAirMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer*, 
   using vtkIceShaderSections::Get;
   parts.VertexDeclarations += Get(vtkIceAirVS, "Dec");
   parts.VertexImpl += Get(vtkIceAirVS, "Impl");
-  parts.FragmentDeclarations += Get(vtkIceAirFS, "Dec");
+  parts.FragmentDeclarations +=
+    vtkIceInteriorLook::Defines() + Get(vtkIceInteriorLookFS, "Dec") + Get(vtkIceAirFS, "Dec");
   parts.FragmentImpl += Get(vtkIceAirFS, "Impl");
 }
 

@@ -14,6 +14,7 @@
 #ifndef vtkIceCrackMapper_h
 #define vtkIceCrackMapper_h
 
+#include "vtkIceInteriorLook.h" // for CrackBumpStrength
 #include "vtkIceWorldSpaceMapper.h"
 
 class vtkIceCrackMapper : public vtkIceWorldSpaceMapper
@@ -67,7 +68,7 @@ protected:
   bool ClipToInterval = true;
   bool DebugColor = false;
   double Intensity = 1.0;
-  double BumpStrength = 0.6;
+  double BumpStrength = vtkIceInteriorLook::CrackBumpStrength;
   double BumpFrequency = 4.0;
 
 private:

@@ -6,6 +6,7 @@
 #include "vtkIceBackToFront.h"
 #include "vtkIceCrackGeometry.h"
 #include "vtkIceCrackMapper.h"
+#include "vtkIceInteriorLook.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -81,7 +82,7 @@ vtkIceInterior::vtkIceInterior()
   property->SetAmbient(0.0);
   property->SetDiffuse(0.0);
   property->SetSpecular(1.0);
-  property->SetSpecularPower(40.0);
+  property->SetSpecularPower(vtkIceInteriorLook::CrackSpecularPower);
   property->SetSpecularColor(1.0, 1.0, 1.0);
   this->CrackActor->SetMapper(this->CrackMapper);
   this->CrackMapper->ScalarVisibilityOff();

@@ -5,6 +5,7 @@
 #include "vtkIceGlistening.h"
 #include "vtkIceGlisteningTexture.h"
 #include "vtkIceInterior.h"
+#include "vtkIceInteriorLook.h"
 #include "vtkIceOptics.h"
 #include "vtkIcePass.h"
 #include "vtkIceShaderSections.h"
@@ -531,14 +532,14 @@ void vtkIceMapper::SetIceShaderParameters(
       settings.Cracks = this->InputFlat ? 0 : this->NumberOfCracks;
       settings.CrackSeed = this->CrackSeed;
       settings.CrackIntensity = this->CrackIntensity;
-      settings.CrackBumpFrequency = 8.0 / this->InputExtent();
+      settings.CrackBumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
       this->GetLookBounds(settings.Bounds);
       settings.AirPlanes = this->NumberOfAirPlanes;
       settings.AirSeed = this->AirSeed;
       settings.Milkiness = this->Milkiness;
-      settings.Debug = this->DebugView == DebugCracksClipped ? 1
-        : this->DebugView == DebugAir                        ? 2
-                                                             : 0;
+      settings.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
+        : this->DebugView == DebugAir                        ? vtkIceInteriorLook::DebugAir
+                                                             : vtkIceInteriorLook::DebugNone;
       if (this->DebugView == DebugCracksClipped)
       {
         settings.AirPlanes = 0;
@@ -655,7 +656,7 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
   look.Debug = debugCracks;
   look.Unclipped = unclipped;
   look.Intensity = this->CrackIntensity;
-  look.BumpFrequency = 8.0 / this->InputExtent();
+  look.BumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
   this->HelpersSawPass = true;
   this->Interior->DrawCracks(ren, actor, look, overlay);
   ++this->NumberOfCrackDraws;

@@ -5,6 +5,8 @@
 #include "vtkIceCrackGeometry.h"
 #include "vtkIceCrackSource.h"
 #include "vtkIceInteriorFS.h"
+#include "vtkIceInteriorLook.h"
+#include "vtkIceInteriorLookFS.h"
 #include "vtkIceNoise.h"
 #include "vtkIceShaderSections.h"
 
@@ -127,7 +129,8 @@ vtkIceSinglePassInterior::~vtkIceSinglePassInterior() = default;
 //------------------------------------------------------------------------------
 std::string vtkIceSinglePassInterior::Declarations()
 {
-  return vtkIceShaderSections::Get(vtkIceInteriorFS, "Dec");
+  return vtkIceInteriorLook::Defines() + vtkIceShaderSections::Get(vtkIceInteriorLookFS, "Dec") +
+    vtkIceShaderSections::Get(vtkIceInteriorFS, "Dec");
 }
 
 //------------------------------------------------------------------------------
@@ -139,7 +142,8 @@ std::string vtkIceSinglePassInterior::Functions(int lightComplexity, int lightCo
   std::ostringstream lights;
   if (lightComplexity == 1 && lightCount > 0)
   {
-    lights << "  light += pow(max(0.0, dot(n, -iceViewDirectionWC)), 40.0) * lightColor0;\n";
+    lights << "  light += pow(max(0.0, dot(n, -iceViewDirectionWC)), ICE_CRACK_SPECULAR_POWER) * "
+              "lightColor0;\n";
   }
   for (int i = 0; lightComplexity >= 2 && i < lightCount; ++i)
   {
@@ -318,7 +322,8 @@ void vtkIceSinglePassInterior::SetUniforms(vtkShaderProgram* program)
   program->SetUniformi("iceCrackCount", this->Current.Cracks);
   program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->Current.AirPlanes : 0);
   program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Current.CrackIntensity));
-  program->SetUniformf("iceCrackBumpStrength", 0.6f); // as the paper passes' crack mapper
+  program->SetUniformf(
+    "iceCrackBumpStrength", static_cast<float>(vtkIceInteriorLook::CrackBumpStrength));
   program->SetUniformf(
     "iceCrackBumpFrequency", static_cast<float>(this->Current.CrackBumpFrequency));
   program->SetUniformf("iceMilkiness", static_cast<float>(this->Current.Milkiness));

@@ -31,7 +31,7 @@ public:
     int AirPlanes = 0;
     int AirSeed = 1;
     double Milkiness = 0.5;
-    int Debug = 0;                                       // 1: cracks red, 2: air green
+    int Debug = 0; // vtkIceInteriorLook::Debug
     double Bounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 }; // what cracks and air are placed in
   };
 

@@ -9,16 +9,9 @@ uniform int iceAirDebug;            // 1: solid green where a bubble covers
     vec2 interval = texelFetch(iceDepthInterval, iceScreenTexel(), 0).rg;
     float depth = iceViewDepth();
     if (depth < interval.x || depth > interval.y) { discard; }
-    vec4 bubble = texture(iceAirAtlas, iceAirUVVSOutput);
-    float alpha = clamp(bubble.a * mix(0.45, 1.6, iceMilkiness), 0.0, 1.0);
-    vec3 colour = mix(bubble.rgb, vec3(1.0), iceMilkiness);
-    if (iceAirDebug == 1)
-    {
-      if (bubble.a < 0.2) { discard; }
-      colour = vec3(0.0, 1.0, 0.0);
-      alpha = 1.0;
-    }
-    gl_FragData[0] = vec4(colour, alpha);
+    vec4 layer = iceAirLayer(texture(iceAirAtlas, iceAirUVVSOutput), iceMilkiness, iceAirDebug == 1);
+    if (iceAirDebug == 1 && layer.a == 0.0) { discard; }
+    gl_FragData[0] = layer;
     // Seen where the ice's front surface is seen (see the crack shader).
     gl_FragDepth = iceWindowDepth(interval.x * 0.99);
   }

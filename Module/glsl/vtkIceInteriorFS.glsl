@@ -13,7 +13,7 @@ uniform float iceCrackIntensity;
 uniform float iceCrackBumpStrength;
 uniform float iceCrackBumpFrequency; // noise cells per model unit
 uniform float iceMilkiness;          // 0: sparse clear bubbles, 1: white and cloudy
-uniform int iceInteriorDebug;        // 1: cracks solid red, 2: air solid green
+uniform int iceInteriorDebug;        // ICE_DEBUG_CRACKS, ICE_DEBUG_AIR or 0
 
 const int iceOutlineSamples = 64; // per crack model, over the full turn
 const int iceRecordsPerRow = 16;
@@ -58,13 +58,6 @@ float iceCrackOutline(int model, float angle)
   return mix(r0, r1, fract(x));
 }
 
-// VTK's specular term of a light travelling along `travel` (world), for the cracks' property of
-// the paper's passes (specular 1, power 40).
-float iceCrackSpecular(vec3 n, vec3 toEye, vec3 travel)
-{
-  float df = max(0.0, dot(n, -travel));
-  return sign(df) * pow(max(0.0, dot(reflect(travel, n), toEye)), 40.0);
-}
 //ICE::Functions
 // Highlights of VTK's lights on a crack at `positionWC` with normal n (facing the viewer).
 vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
@@ -100,14 +93,8 @@ void iceInterior(inout vec3 colour, float backDepth)
     vec2 xy = ray.origin.xy + s * ray.direction.xy;
     bool hit = s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
     vec4 bubble = texture(iceAirAtlas, ray.shape.xy + 0.01 + 0.24 * (clamp(xy, -1.0, 1.0) + 1.0));
-    float alpha = hit ? clamp(bubble.a * mix(0.45, 1.6, iceMilkiness), 0.0, 1.0) : 0.0;
-    vec3 bubbleColour = mix(bubble.rgb, vec3(1.0), iceMilkiness);
-    if (iceInteriorDebug == 2)
-    {
-      alpha = hit && bubble.a >= 0.2 ? 1.0 : 0.0;
-      bubbleColour = vec3(0.0, 1.0, 0.0);
-    }
-    colour = mix(colour, bubbleColour, alpha);
+    vec4 layer = iceAirLayer(bubble, iceMilkiness, iceInteriorDebug == ICE_DEBUG_AIR);
+    colour = mix(colour, layer.rgb, hit ? layer.a : 0.0);
   }
 
   // Cracks: a crack the ray misses (no crossing in the ice, or outside the outline) is skipped.
@@ -157,7 +144,7 @@ void iceInterior(inout vec3 colour, float backDepth)
     n = dot(n, e) > 0.0 ? -n : n;
     highlights += iceCrackLight(n, -e, icePositionWCVSOutput + s * e);
   }
-  colour = iceInteriorDebug == 1 && crackSeen ? vec3(1.0, 0.0, 0.0)
+  colour = iceInteriorDebug == ICE_DEBUG_CRACKS && crackSeen ? vec3(1.0, 0.0, 0.0)
                                               : colour + iceCrackIntensity * highlights;
 }
 //ICE::Call
