@@ -17,6 +17,20 @@ constexpr double CrackBumpStrength = 0.6;
 // Noise cells across the ice's extent on the crack sheets (their bump frequency times the extent).
 constexpr double CrackBumpCells = 8.0;
 
+// The milky core (vtkIceMapper::MilkyCoreRadius): the optical depth of a ray through its centre
+// at Milkiness 1 (the core covers 1 - exp(-depth) of what is behind it), the colour its air
+// scatters and the share of the air planes' bubbles left at its rim.
+constexpr double CoreOpticalDepth = 4.0;
+constexpr double CoreColour[3] = { 0.88, 0.92, 0.95 };
+constexpr double CoreRimAir = 0.3;
+
+// The density of the core's air (iceCoreDensity) that gives a ray through its centre the optical
+// depth CoreOpticalDepth * milkiness: the density's integral along that ray is sqrt(pi).
+inline double CoreDensity(double milkiness)
+{
+  return CoreOpticalDepth * milkiness / 1.772453850905516;
+}
+
 inline double CrackBumpFrequency(double extent)
 {
   return CrackBumpCells / extent;
@@ -36,6 +50,9 @@ inline std::string Defines()
   std::ostringstream defines;
   defines.precision(9);
   defines << std::showpoint << "#define ICE_CRACK_SPECULAR_POWER " << CrackSpecularPower << "\n"
+          << "#define ICE_CORE_COLOUR vec3(" << CoreColour[0] << ", " << CoreColour[1] << ", "
+          << CoreColour[2] << ")\n"
+          << "#define ICE_CORE_RIM_AIR " << CoreRimAir << "\n"
           << "#define ICE_DEBUG_CRACKS " << static_cast<int>(DebugCracks) << "\n"
           << "#define ICE_DEBUG_AIR " << static_cast<int>(DebugAir) << "\n";
   return defines.str();

@@ -159,6 +159,9 @@ std::vector<Entry> MakeEntries()
     [](const Target& t) { return static_cast<double>(t.Mapper->GetAirSeed()); },
     [](const Target& t, double v) { t.Mapper->SetAirSeed(static_cast<int>(v)); }, Kind::Integer);
   ICE_MAPPER_NUMBER("milkiness", "0 clear bubbles, 1 white and cloudy", Milkiness);
+  ICE_MAPPER_NUMBER("milky-core",
+    "a cloudy core of air at the centre, its radius a fraction of the model's half size (0: none)",
+    MilkyCoreRadius);
   ICE_MAPPER_NUMBER("bumps", "strength of the surface bumps (0: smooth)", BumpStrength);
   ICE_MAPPER_NUMBER("bump-scale", "size of the bumps, a fraction of the model", BumpScale);
   ICE_MAPPER_SWITCH("glistening", "direct light, rim light and crack glints", Glistening);

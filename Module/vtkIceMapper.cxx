@@ -158,6 +158,7 @@ vtkIceClampedSetter(FresnelPower)
 vtkIceClampedSetter(BackNormalWeight)
 vtkIceClampedSetter(CrackIntensity)
 vtkIceClampedSetter(Milkiness)
+vtkIceClampedSetter(MilkyCoreRadius)
 vtkIceClampedSetter(BumpStrength)
 vtkIceClampedSetter(BumpScale)
 vtkIceClampedSetter(GlisteningScale)
@@ -245,7 +246,15 @@ bool vtkIceMapper::HasInterior() const
   {
     return true;
   }
-  return view == DebugOff && (this->NumberOfCracks > 0 || this->NumberOfAirPlanes > 0);
+  return view == DebugOff &&
+    (this->NumberOfCracks > 0 || this->NumberOfAirPlanes > 0 ||
+      (this->HasMilkyCore() && this->InteriorMethod == InteriorSinglePass));
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::HasMilkyCore() const
+{
+  return this->MilkyCoreRadius > 0.0 && this->Milkiness > 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -370,6 +379,14 @@ void vtkIceMapper::WarnSettingsWithoutEffect(bool withPass)
     vtkWarningMacro(<< "AttenuationColor and AttenuationDistance show nothing without vtkIcePass "
                        "on the renderer: its back faces give the path in the ice.");
     this->WarnedAbsorptionWithoutPass = true;
+  }
+  if (this->HasMilkyCore() && this->InteriorMethod != InteriorSinglePass &&
+    !this->WarnedCoreWithPaperPasses)
+  {
+    vtkWarningMacro(<< "MilkyCoreRadius " << this->MilkyCoreRadius
+                    << " shows nothing with InteriorPaperPasses: the single-pass interior draws "
+                       "the milky core. Set InteriorMethod to InteriorSinglePass to see it.");
+    this->WarnedCoreWithPaperPasses = true;
   }
 }
 
@@ -537,6 +554,17 @@ void vtkIceMapper::SetIceShaderParameters(
       settings.AirPlanes = this->NumberOfAirPlanes;
       settings.AirSeed = this->AirSeed;
       settings.Milkiness = this->Milkiness;
+      if (this->HasMilkyCore())
+      {
+        settings.CoreDensity = vtkIceInteriorLook::CoreDensity(this->Milkiness);
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          const double half = 0.5 * (settings.Bounds[2 * axis + 1] - settings.Bounds[2 * axis]);
+          settings.CoreCenter[axis] =
+            0.5 * (settings.Bounds[2 * axis] + settings.Bounds[2 * axis + 1]);
+          settings.CoreScale[axis] = 1.0 / std::max(half * this->MilkyCoreRadius, 1.0e-12);
+        }
+      }
       settings.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
         : this->DebugView == DebugAir                        ? vtkIceInteriorLook::DebugAir
                                                              : vtkIceInteriorLook::DebugNone;
@@ -733,6 +761,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfAirPlanes: " << this->NumberOfAirPlanes << "\n";
   os << indent << "AirSeed: " << this->AirSeed << "\n";
   os << indent << "Milkiness: " << this->Milkiness << "\n";
+  os << indent << "MilkyCoreRadius: " << this->MilkyCoreRadius << "\n";
   os << indent << "BumpStrength: " << this->BumpStrength << "\n";
   os << indent << "BumpScale: " << this->BumpScale << "\n";
   os << indent << "NormalMap: " << this->NormalMap.Get() << "\n";

@@ -312,6 +312,21 @@ public:
 
   ///@{
   /**
+   * A milky core: air gathered where the ice froze last, around the centre of its bounds, as a
+   * cloud that whitens what is seen through it (by Milkiness: a ray through its centre at
+   * Milkiness 1 loses 98 % of what is behind) and draws the air planes' bubbles towards it. The
+   * core's radius is this fraction of the ice's half size along each axis; the cloud thins
+   * smoothly beyond it. 0 (the default): no core, the air planes spread evenly. Clamped to
+   * [0, 10]. Drawn by the single-pass interior (InteriorSinglePass) with vtkIcePass.
+   */
+  virtual void SetMilkyCoreRadius(double radius);
+  virtual double GetMilkyCoreRadiusMinValue() { return 0.0; }
+  virtual double GetMilkyCoreRadiusMaxValue() { return 10.0; }
+  vtkGetMacro(MilkyCoreRadius, double);
+  ///@}
+
+  ///@{
+  /**
    * A bumpy surface: how far the normal tilts (0 = smooth, the paper's clean optics) and the size
    * of a bump as a fraction of the ice's largest extent. The bumps are fixed to the model, so they
    * do not swim when the camera moves, and they drive reflection, refraction and Fresnel.
@@ -512,6 +527,7 @@ protected:
   // Whether the interior (cracks or air) is drawn in this frame, and by which method.
   bool Absorbs() const; // absorption set: a path length is needed
   bool HasInterior() const;
+  bool HasMilkyCore() const; // MilkyCoreRadius and Milkiness above 0
   bool UsesSinglePassInterior() const;
 
   double IndexOfRefraction;
@@ -534,6 +550,7 @@ protected:
   int NumberOfAirPlanes = 19;
   int AirSeed = 1;
   double Milkiness = 0.5;
+  double MilkyCoreRadius = 0.0;
   double BumpStrength = 0.08;
   double BumpScale = 0.15;
   vtkSmartPointer<vtkTexture> NormalMap;
@@ -569,6 +586,7 @@ protected:
   void WarnSettingsWithoutEffect(bool withPass);
   bool WarnedSnowWithoutGlistening = false;
   bool WarnedAbsorptionWithoutPass = false;
+  bool WarnedCoreWithPaperPasses = false;
   // How the input encloses a volume (vtkIceSurfaceCheck::CheckClosure), found when Geometry
   // clipping or culling first needs it: its open edges, whether it is closed and faces outward.
   void CheckInputClosure();

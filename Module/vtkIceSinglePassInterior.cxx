@@ -328,6 +328,15 @@ void vtkIceSinglePassInterior::SetUniforms(vtkShaderProgram* program)
     "iceCrackBumpFrequency", static_cast<float>(this->Current.CrackBumpFrequency));
   program->SetUniformf("iceMilkiness", static_cast<float>(this->Current.Milkiness));
   program->SetUniformi("iceInteriorDebug", this->Current.Debug);
+  const float coreCenter[3] = { static_cast<float>(this->Current.CoreCenter[0]),
+    static_cast<float>(this->Current.CoreCenter[1]),
+    static_cast<float>(this->Current.CoreCenter[2]) };
+  const float coreScale[3] = { static_cast<float>(this->Current.CoreScale[0]),
+    static_cast<float>(this->Current.CoreScale[1]),
+    static_cast<float>(this->Current.CoreScale[2]) };
+  program->SetUniform3f("iceCoreCenter", coreCenter);
+  program->SetUniform3f("iceCoreScale", coreScale);
+  program->SetUniformf("iceCoreDensity", static_cast<float>(this->Current.CoreDensity));
 }
 
 //------------------------------------------------------------------------------

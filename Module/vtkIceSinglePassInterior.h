@@ -31,7 +31,10 @@ public:
     int AirPlanes = 0;
     int AirSeed = 1;
     double Milkiness = 0.5;
-    int Debug = 0; // vtkIceInteriorLook::Debug
+    double CoreDensity = 0.0; // 0: no milky core
+    double CoreCenter[3] = { 0.0, 0.0, 0.0 };
+    double CoreScale[3] = { 1.0, 1.0, 1.0 };             // model to the core's frame
+    int Debug = 0;                                       // vtkIceInteriorLook::Debug
     double Bounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 }; // what cracks and air are placed in
   };
 

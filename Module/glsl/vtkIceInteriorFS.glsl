@@ -14,6 +14,9 @@ uniform float iceCrackBumpStrength;
 uniform float iceCrackBumpFrequency; // noise cells per model unit
 uniform float iceMilkiness;          // 0: sparse clear bubbles, 1: white and cloudy
 uniform int iceInteriorDebug;        // ICE_DEBUG_CRACKS, ICE_DEBUG_AIR or 0
+uniform vec3 iceCoreCenter;          // the milky core, model coordinates
+uniform vec3 iceCoreScale;           // model to the core's frame (its radius 1), per axis
+uniform float iceCoreDensity;        // 0: no core
 
 const int iceOutlineSamples = 64; // per crack model, over the full turn
 const int iceRecordsPerRow = 16;
@@ -82,6 +85,15 @@ void iceInterior(inout vec3 colour, float backDepth)
   vec3 o = icePositionMCVSOutput;
   vec3 d = mat3(iceWCMCMatrix) * e;
 
+  // The milky core behind the air: the air planes in front of it are seen through less of it.
+  vec3 coreOrigin = (o - iceCoreCenter) * iceCoreScale;
+  vec3 coreDirection = d * iceCoreScale;
+  if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
+  {
+    float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sBack, iceCoreDensity);
+    colour = iceMilkyCore(colour, depth);
+  }
+
   // The loop runs the same number of times for every fragment, and every step samples the atlas:
   // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform
   // control flow). A plane missed by this pixel's ray adds nothing (alpha 0). On llvmpipe, which
@@ -94,6 +106,11 @@ void iceInterior(inout vec3 colour, float backDepth)
     bool hit = s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
     vec4 bubble = texture(iceAirAtlas, ray.shape.xy + 0.01 + 0.24 * (clamp(xy, -1.0, 1.0) + 1.0));
     vec4 layer = iceAirLayer(bubble, iceMilkiness, iceInteriorDebug == ICE_DEBUG_AIR);
+    if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
+    {
+      layer.a *= iceAirNearCore(coreOrigin + s * coreDirection,
+        iceCoreOpticalDepth(coreOrigin, coreDirection, s, iceCoreDensity));
+    }
     colour = mix(colour, layer.rgb, hit ? layer.a : 0.0);
   }
 

@@ -15,6 +15,21 @@ vec4 iceAirLayer(vec4 bubble, float milkiness, bool debug)
     clamp(bubble.a * mix(0.45, 1.6, milkiness), 0.0, 1.0));
 }
 
+// The colour behind the milky core seen through it: the core's air scatters white light, as much
+// as its optical depth along the ray hides (1 - exp(-depth), which never reaches white).
+vec3 iceMilkyCore(vec3 behind, float opticalDepth)
+{
+  return mix(ICE_CORE_COLOUR, behind, exp(-opticalDepth));
+}
+
+// How much of an air plane's coverage shows at `u` (the core's frame) with the core's optical depth
+// `inFront` between it and the eye: the air gathers in the core (its rim keeps ICE_CORE_RIM_AIR of
+// the bubbles), and the core in front hides it.
+float iceAirNearCore(vec3 u, float inFront)
+{
+  return mix(ICE_CORE_RIM_AIR, 1.0, exp(-dot(u, u))) * exp(-inFront);
+}
+
 // VTK's specular term of a light travelling along `travel` on a crack with normal n seen
 // towards `toEye` (all world space): the cracks' highlight.
 float iceCrackSpecular(vec3 n, vec3 toEye, vec3 travel)

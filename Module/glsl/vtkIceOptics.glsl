@@ -38,6 +38,30 @@ vec3 iceTransmittance(float pathLength, vec3 attenuationColor, float inverseDist
   return pow(clamp(attenuationColor, 1.0e-4, 1.0), vec3(pathLength * inverseDistance));
 }
 
+// erf (Abramowitz and Stegun 7.1.26, absolute error below 1.5e-7).
+float iceErf(float x)
+{
+  float t = 1.0 / (1.0 + 0.3275911 * abs(x));
+  float poly =
+    t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  return sign(x) * (1.0 - poly * exp(-x * x));
+}
+
+// The milky core's optical depth along the ray p + s q, s in [0, sEnd]. The core's air density is
+// density * exp(-|u|^2) in its own frame u (its radius is 1 there); p and q are the ray's origin
+// and direction in u. The integral of the density over the ray's length in u, in closed form.
+float iceCoreOpticalDepth(vec3 p, vec3 q, float sEnd, float density)
+{
+  float speed = length(q);
+  if (speed < 1.0e-12 || density <= 0.0)
+  {
+    return 0.0;
+  }
+  float along = dot(p, q) / speed; // the closest approach is at -along
+  float miss2 = max(dot(p, p) - along * along, 0.0);
+  return density * 0.886226925 * exp(-miss2) * (iceErf(speed * sEnd + along) - iceErf(along));
+}
+
 // The eye ray's path through the ice, from the front surface at view depth frontDepth to the back
 // face behind it at backDepth (0: none, no path). View depth grows by e . viewDirection per unit
 // of the ray; the floor keeps a ray grazing the view plane finite.

@@ -53,6 +53,21 @@ inline Vec3 Transmittance(double pathLength, const Vec3& attenuationColor, doubl
     glm::clamp(attenuationColor, Vec3(1.0e-4), Vec3(1.0)), Vec3(pathLength * inverseDistance));
 }
 
+// The milky core's optical depth (iceCoreOpticalDepth): density * exp(-|u|^2) integrated along the
+// ray p + s q (in the core's frame u) over s in [0, sEnd], by its length in u.
+inline double CoreOpticalDepth(const Vec3& p, const Vec3& q, double sEnd, double density)
+{
+  const double speed = glm::length(q);
+  if (speed < 1.0e-12 || density <= 0.0)
+  {
+    return 0.0;
+  }
+  const double along = glm::dot(p, q) / speed;
+  const double miss2 = std::max(glm::dot(p, p) - along * along, 0.0);
+  return density * 0.886226925452758 /* sqrt(pi) / 2 */ * std::exp(-miss2) *
+    (std::erf(speed * sEnd + along) - std::erf(along));
+}
+
 // The eye ray's path through the ice between the view depths of its front and back faces
 // (iceEyePathLength); backDepth 0: no back face, no path.
 inline double EyePathLength(

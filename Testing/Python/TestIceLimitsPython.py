@@ -48,6 +48,7 @@ class Messages:
 
 
 CLAMPED = ["IndexOfRefraction", "RefractionRatio", "AttenuationDistance", "FresnelPower", "BackNormalWeight", "CrackIntensity", "Milkiness",
+           "MilkyCoreRadius",
            "BumpStrength", "BumpScale", "GlisteningScale", "GlisteningIntensity",
            "GlisteningAlignmentGain", "SnowAmount"]
 INTEGERS = {"NumberOfCracks": (0, 1000), "NumberOfAirPlanes": (0, 1000)}

@@ -1,5 +1,6 @@
 """A setting that cannot show says so, once: snow needs Glistening, absorption needs vtkIcePass
-(the back faces give the path in the ice). Where it shows, nothing is said."""
+(the back faces give the path in the ice), the milky core the single-pass interior. Where it
+shows, nothing is said."""
 import sys
 
 import vtk
@@ -49,6 +50,15 @@ def absorption(mapper):
     mapper.SetAttenuationDistance(1.0)
 
 
+def core_in_paper_passes(mapper):
+    mapper.SetMilkyCoreRadius(0.5)
+    mapper.SetInteriorMethod(vtkice.vtkIceMapper.InteriorPaperPasses)
+
+
+def core_in_single_pass(mapper):
+    mapper.SetMilkyCoreRadius(0.5)
+
+
 def test_snow_without_glistening_warns_once():
     text = warnings_of_one_render(snow, with_pass=True)
     check(text.count("shows nothing") == 1 and "Glistening on" in text, text)
@@ -66,6 +76,16 @@ def test_absorption_without_the_pass_warns_once():
 
 def test_absorption_with_the_pass_says_nothing():
     text = warnings_of_one_render(absorption, with_pass=True)
+    check("nothing" not in text, text)
+
+
+def test_core_with_paper_passes_warns_once():
+    text = warnings_of_one_render(core_in_paper_passes, with_pass=True)
+    check(text.count("shows nothing") == 1 and "InteriorSinglePass" in text, text)
+
+
+def test_core_in_the_single_pass_says_nothing():
+    text = warnings_of_one_render(core_in_single_pass, with_pass=True)
     check("nothing" not in text, text)
 
 

@@ -170,6 +170,7 @@ vtkIceForwardMacro(CrackClipping, int, v);
 vtkIceForwardMacro(NumberOfAirPlanes, int, v);
 vtkIceForwardMacro(AirSeed, int, v);
 vtkIceForwardMacro(Milkiness, double, v);
+vtkIceForwardMacro(MilkyCoreRadius, double, v);
 vtkIceForwardMacro(BumpStrength, double, v);
 vtkIceForwardMacro(BumpScale, double, v);
 vtkIceForwardMacro(Glistening, int, v != 0);

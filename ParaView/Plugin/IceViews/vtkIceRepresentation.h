@@ -70,6 +70,7 @@ public:
   void SetNumberOfAirPlanes(int value);
   void SetAirSeed(int value);
   void SetMilkiness(double value);
+  void SetMilkyCoreRadius(double value);
   void SetBumpStrength(double value);
   void SetBumpScale(double value);
   void SetGlistening(int value);

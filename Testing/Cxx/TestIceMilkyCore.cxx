@@ -1,0 +1,193 @@
+// The milky core (MilkyCoreRadius) against the CPU reference: an ice sphere with
+// IndexOfRefraction 1, no reflection and no absorption passes every view ray straight through,
+// so each interior pixel must be the skybox behind it seen through the core: mixed towards the
+// core's colour by 1 - exp(-depth), depth = vtkIceOpticsReference::CoreOpticalDepth of the ray's
+// chord in the core's frame (the sphere's bounds, scaled by the radius). The centre is whiter
+// than the rim; a core of radius 0 changes no pixel; the paper passes draw none and say so.
+#include "IceTestUtilities.h"
+#include "vtkIceCubeMapSource.h"
+#include "vtkIceInteriorLook.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSkybox.h"
+#include "vtkSphereSource.h"
+#include "vtkTexture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <vector>
+
+namespace
+{
+const double Milkiness = 0.8;
+const double CoreRadius = 0.6;
+
+struct Comparison
+{
+  IceTest::Stats Stats;
+  double CentreWhiteness = 0.0; // mean mix towards the core's colour, inner third of the disk
+  double RimWhiteness = 0.0;    // the same, outer third
+};
+
+// Interior pixels of the unit sphere: |rendered - reference|, and how white centre and rim are.
+Comparison CompareWithReference(vtkRenderer* renderer, const double bounds[6],
+  const IceTest::Image& background, const IceTest::Image& image, const std::vector<bool>& interior)
+{
+  glm::dvec3 centre;
+  glm::dvec3 scale;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    centre[axis] = 0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]);
+    scale[axis] = 1.0 / (0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]) * CoreRadius);
+  }
+  const double density = vtkIceInteriorLook::CoreDensity(Milkiness);
+  const double sphereCentre[3] = { 0.0, 0.0, 0.0 };
+  std::vector<double> differences;
+  double whiteness[2] = { 0.0, 0.0 };
+  int counted[2] = { 0, 0 };
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      if (!interior[static_cast<size_t>(y) * image.Width + x])
+      {
+        continue;
+      }
+      double origin[3];
+      double direction[3];
+      double tNear;
+      double tFar;
+      IceTest::PixelRay(renderer, x, y, origin, direction);
+      IceTest::IntersectSphere(origin, direction, sphereCentre, 1.0, tNear, tFar);
+      const glm::dvec3 e(direction[0], direction[1], direction[2]);
+      const glm::dvec3 entry = glm::dvec3(origin[0], origin[1], origin[2]) + tNear * e;
+      const double depth = vtkIceOpticsReference::CoreOpticalDepth(
+        (entry - centre) * scale, e * scale, tFar - tNear, density);
+      const double covered = 1.0 - std::exp(-depth);
+      const unsigned char* behind = background.At(x, y);
+      const unsigned char* rendered = image.At(x, y);
+      double largest = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double core = 255.0 * vtkIceInteriorLook::CoreColour[c];
+        largest =
+          std::max(largest, std::abs(rendered[c] - (behind[c] + covered * (core - behind[c]))));
+      }
+      differences.push_back(largest);
+      // The ray's closest approach to the centre: the inner or the outer third of the disk.
+      const double miss = glm::length(glm::cross(entry - glm::dvec3(0.0), e));
+      if (miss < 1.0 / 3.0 || miss > 2.0 / 3.0)
+      {
+        whiteness[miss < 1.0 / 3.0 ? 0 : 1] += covered;
+        ++counted[miss < 1.0 / 3.0 ? 0 : 1];
+      }
+    }
+  }
+  Comparison comparison;
+  comparison.Stats = IceTest::Summarize(differences);
+  comparison.CentreWhiteness = whiteness[0] / std::max(counted[0], 1);
+  comparison.RimWhiteness = whiteness[1] / std::max(counted[1], 1);
+  return comparison;
+}
+
+int ChangedPixels(const IceTest::Image& a, const IceTest::Image& b)
+{
+  int changed = 0;
+  for (int y = 0; y < a.Height; ++y)
+  {
+    for (int x = 0; x < a.Width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        if (a.At(x, y)[c] != b.At(x, y)[c])
+        {
+          ++changed;
+          break;
+        }
+      }
+    }
+  }
+  return changed;
+}
+}
+
+int TestIceMilkyCore(int, char*[])
+{
+  vtkSmartPointer<vtkTexture> environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(environment);
+  renderer->AddActor(skybox);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(128);
+  sphere->SetPhiResolution(128);
+  sphere->Update();
+  double bounds[6];
+  sphere->GetOutput()->GetBounds(bounds);
+  vtkNew<vtkIceMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  IceTest::UseCleanOptics(mapper);
+  mapper->SetIndexOfRefraction(1.0);
+  mapper->SetFresnelPower(1.0e6);
+  mapper->SetMilkiness(Milkiness);
+  vtkNew<vtkActor> ice;
+  ice->SetMapper(mapper);
+  renderer->AddActor(ice);
+  vtkNew<vtkIcePass> pass;
+  renderer->SetPass(pass);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(300, 300);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(1.5, 0.4, 3.2);
+  renderer->ResetCameraClippingRange();
+  const double centre[3] = { 0.0, 0.0, 0.0 };
+  const std::vector<bool> interior = IceTest::SphereInterior(renderer, centre, 1.0, 3);
+
+  ice->VisibilityOff();
+  window->Render();
+  const IceTest::Image background = IceTest::Capture(window);
+  ice->VisibilityOn();
+  window->Render();
+  const IceTest::Image noCore = IceTest::Capture(window);
+
+  bool ok = true;
+  mapper->SetMilkyCoreRadius(CoreRadius);
+  window->Render();
+  const IceTest::Image withCore = IceTest::Capture(window);
+  const Comparison comparison =
+    CompareWithReference(renderer, bounds, background, withCore, interior);
+  ok = IceTest::ReportReference("the milky core along the chord", comparison.Stats, 20000) && ok;
+  std::cout << "whitening: centre " << comparison.CentreWhiteness << ", rim "
+            << comparison.RimWhiteness << "\n";
+  if (!(comparison.CentreWhiteness > 0.5 &&
+        comparison.CentreWhiteness > 2.0 * comparison.RimWhiteness))
+  {
+    std::cerr << "The core's centre should be whiter than half and than twice its rim\n";
+    ok = false;
+  }
+
+  // Radius 0: no core, the picture of a mapper never given one.
+  mapper->SetMilkyCoreRadius(0.0);
+  window->Render();
+  const int changed = ChangedPixels(noCore, IceTest::Capture(window));
+  if (changed != 0)
+  {
+    std::cerr << "MilkyCoreRadius 0 changed " << changed << " pixels\n";
+    ok = false;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
