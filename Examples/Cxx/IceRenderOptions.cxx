@@ -15,7 +15,9 @@
 #include <vector>
 
 // The looks in Examples/Presets, as --help and a refused --preset name them.
-#define VTKICE_SHIPPED_PRESETS "clear, ice-cube, lake, glacier, frosted, snow"
+#define VTKICE_SHIPPED_PRESETS "clear, ice-cube, lake, glacier, frosted, snow, paper"
+// The look ice-render starts from: what a user recognises as ice. --preset replaces it.
+#define VTKICE_DEFAULT_PRESET "ice-cube"
 
 namespace IceRenderOptions
 {
@@ -26,7 +28,8 @@ const char* const Usage =
   "                  [--out FILE] [--static] [--interactive] [--turntable N [--rate FPS]]\n"
   "                  [--preset NAME|FILE] [--print-preset] [look and camera options]\n"
   "                  [--backend auto|x|egl|osmesa]\n"
-  "Renders a model as ice (default: the teapot in a small landscape) to ice.png.\n"
+  "Renders a model as ice (default: the teapot in a small landscape, the " VTKICE_DEFAULT_PRESET
+  " look)\nto ice.png.\n"
   "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file; default teapot\n"
   "  --env    sky (default), test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
   "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too)\n"
@@ -39,7 +42,9 @@ const char* const Usage =
   "                 N in [1, 3600]\n"
   "  --rate FPS     frames per second of the turntable's video, in [1, 240], default 24\n"
   "  --preset     a look: a shipped one (" VTKICE_SHIPPED_PRESETS ")\n"
-  "               or a file of NAME = VALUE lines; options on the command line override it\n"
+  "               or a file of NAME = VALUE lines, default " VTKICE_DEFAULT_PRESET "; settings it\n"
+  "               does not name have the library's defaults; options on the command line\n"
+  "               override it\n"
   "  --print-preset  print the effective look as a preset and exit\n"
   "  --fit        frame the ice: the camera keeps its direction and moves to show it whole\n"
   "  --backend  x (X display), egl or osmesa (no X needed); default $VTKICE_BACKEND or auto:\n"
@@ -66,9 +71,22 @@ bool ParseInteger(const std::string& text, int low, int high, int& value)
   return true;
 }
 
+// The default preset's settings; empty where it cannot be read (the library's defaults then).
+IceLook::Assignments DefaultLook()
+{
+  IceLook::Assignments look;
+  const std::string path = FindPreset(VTKICE_DEFAULT_PRESET);
+  if (path.empty() || !IceLook::ReadPreset(path, look).empty())
+  {
+    look.clear();
+  }
+  return look;
+}
+
 void PrintUsage()
 {
   std::cout << Usage;
+  const IceLook::Assignments look = DefaultLook();
   for (const IceLook::Setting& setting : IceLook::Settings())
   {
     std::string syntax = std::string("--") + setting.Name;
@@ -95,7 +113,14 @@ void PrintUsage()
         syntax += " X,Y,Z";
         break;
     }
-    const std::string initial = IceLook::Default(setting.Name);
+    std::string initial = IceLook::Default(setting.Name);
+    for (const auto& assignment : look)
+    {
+      if (assignment.first == setting.Name)
+      {
+        initial = assignment.second;
+      }
+    }
     syntax += initial.empty() ? ", default: framing the model" : ", default " + initial;
     if (std::string(setting.Name) == "cube-map")
     {
@@ -238,7 +263,7 @@ std::string FindPreset(const std::string& preset)
 //------------------------------------------------------------------------------
 int Parse(int argc, char* argv[], Options& options)
 {
-  IceLook::Assignments preset;
+  IceLook::Assignments preset = DefaultLook();
   IceLook::Assignments given;
   for (int i = 1; i < argc; ++i)
   {

@@ -58,9 +58,10 @@ if [ "$osmesa" = 1 ]; then
     env -u DISPLAY "$ice_render" --backend osmesa --out ice-osmesa.png
   compare ice-osmesa.png ice-x.png
 fi
-# The X render is the reviewed picture (the baseline of Cxx.TestIceTeapot is the same scene).
+# The X render is the reviewed picture (the baseline of Cxx.TestIceTeapot is the same scene with
+# the library's defaults: the paper preset).
 expect_ok "ice-render --backend x at 400x300" "back end x" \
-  "$ice_render" --backend x --size 400x300 --out x-400x300.png
+  "$ice_render" --backend x --preset paper --size 400x300 --out x-400x300.png
 compare x-400x300.png "$baseline" --alternatives
 
 # auto: x with a display, egl without, osmesa without EGL.

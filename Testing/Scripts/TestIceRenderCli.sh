@@ -81,12 +81,15 @@ expect_error "a misspelled switch names the nearest" "(did you mean --no-glisten
 expect_error "NAME=VALUE says the value follows a space" "(the value follows a space: --eta 0.8)" \
   --eta=0.8
 expect_error "SWITCH=VALUE says the switch takes none" "(--static takes no value)" --static=1
-# --help: every look and camera option shows its default beside its range or choices.
+# --help: every look and camera option shows its default beside its range or choices: the default
+# preset's (ice-cube) where it names the setting, else the library's.
 "$ice_render" --help >help.txt 2>&1
 settings=$(awk '/^Look and camera/ {on = 1; next} on && /^  --/' help.txt)
 without=$(printf '%s\n' "$settings" | grep -v ", default" || true)
 if [ "$(printf '%s\n' "$settings" | wc -l)" -ge 30 ] && [ -z "$without" ] &&
-   grep -q '^  --milkiness \[0, 1\], default 0.5$' help.txt &&
+   grep -q '^  --milkiness \[0, 1\], default 0.6$' help.txt &&
+   grep -q '^  --fresnel-power \[0, 1000000\], default 3$' help.txt &&
+   grep -q 'default ice-cube' help.txt &&
    grep -q '^  --cube-map, --no-cube-map, default on (off with --static)$' help.txt &&
    grep -q '^  --view-angle \[1, 179\], default: framing the model$' help.txt; then
   echo "ok   --help shows each setting's default beside its range"

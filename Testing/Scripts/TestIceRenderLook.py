@@ -81,6 +81,7 @@ def options_change_the_picture():
         ([], ["--air", "0"], True),
         ([], ["--air-seed", "5"], True),
         ([], ["--milkiness", "1"], True),
+        ([], ["--milky-core", "1"], True),
         ([], ["--bumps", "0"], True),
         ([], ["--bump-scale", "0.02"], True),
         ([], ["--glistening"], True),
@@ -148,7 +149,7 @@ def bad_values_are_refused():
         (["--view-up", "0,0,0"], "not 0,0,0"),
         (["--view-angle", "180"], "[1, 179]"),
         (["--turntable", "0"], "[1, 3600]"),
-        (["--preset", "no-such-look"], "shipped clear, ice-cube, lake, glacier, frosted, snow"),
+        (["--preset", "no-such-look"], "shipped clear, ice-cube, lake, glacier, frosted, snow, paper"),
         (["--no-eta"], "unknown argument '--no-eta'"),
     ]
     for args, expected in cases:
@@ -169,7 +170,7 @@ def bad_values_are_refused():
 
 
 def presets_round_trip():
-    for name in ("clear", "ice-cube", "lake", "glacier", "frosted", "snow"):
+    for name in ("clear", "ice-cube", "lake", "glacier", "frosted", "snow", "paper"):
         shipped = render("preset-" + name, *BASE, "--preset", name)
         printed = run(*BASE, "--preset", name, "--print-preset")
         path = os.path.join(WORK, name + "-printed.ice")

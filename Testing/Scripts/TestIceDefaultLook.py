@@ -1,0 +1,90 @@
+"""ice-render's default look reads as ice, measured: thick ice is bluer than thin ice, at most 1 %
+of the ice's pixels are clipped to white, the centre of the block is milkier than its rim.
+
+usage: TestIceDefaultLook.py ICE_RENDER WORK_DIR   (Debian's /usr/bin/python3, for vtk)
+"""
+import os
+import subprocess
+import sys
+
+import vtk
+
+ICE_RENDER, WORK = sys.argv[1], sys.argv[2]
+SIZE = "480x360"
+failures = 0
+
+
+def check(name, ok, detail=""):
+    global failures
+    print(("ok   " if ok else "FAIL ") + name + (": " + detail if detail else ""))
+    failures += 0 if ok else 1
+
+
+def render(name, *args):
+    """Renders to NAME.png; returns its pixels (a list of RGB tuples)."""
+    path = os.path.join(WORK, name + ".png")
+    result = subprocess.run([ICE_RENDER, "--size", SIZE, *args, "--out", path],
+                            capture_output=True, text=True, timeout=300)
+    if result.returncode != 0:
+        sys.exit("ice-render %s: %s" % (" ".join(args), result.stderr.strip()))
+    reader = vtk.vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    scalars = reader.GetOutput().GetPointData().GetScalars()
+    return [scalars.GetTuple(i)[:3] for i in range(scalars.GetNumberOfTuples())]
+
+
+def ice_pixels(model, look):
+    """The pixels where the ice is: those the front-depth debug view changes."""
+    debug = render(model + "-debug", "--model", model, "--debug-view", "front-depth")
+    return [i for i, (p, q) in enumerate(zip(look, debug)) if p != q]
+
+
+def mean(values):
+    values = list(values)
+    return sum(values) / max(len(values), 1)
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    width, height = (int(v) for v in SIZE.split("x"))
+    blue_shift = {}
+    for model in ("block", "teapot"):
+        look = render(model, "--model", model)
+        ice = ice_pixels(model, look)
+        clipped = sum(1 for i in ice if min(look[i]) >= 254)
+        check("%s: at most 1 %% of the ice's pixels clipped to white" % model,
+              len(ice) > 5000 and clipped <= 0.01 * len(ice),
+              "%d of %d (%.2f %%)" % (clipped, len(ice), 100.0 * clipped / max(len(ice), 1)))
+        # What absorption adds: blue over red, against the same look without it.
+        clear = render(model + "-clear", "--model", model, "--attenuation-distance", "inf")
+        blue_shift[model] = mean((look[i][2] - look[i][0]) - (clear[i][2] - clear[i][0]) for i in ice)
+        if model == "block":
+            # How much whiter the core makes the ice, in the middle third of the block's extent on
+            # the screen and in its outer sixth.
+            no_core = render("block-no-core", "--model", model, "--milky-core", "0")
+            xs = [i % width for i in ice]
+            ys = [i // width for i in ice]
+            x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+
+            def where(i):
+                u = ((i % width) - x0) / max(x1 - x0, 1)
+                v = ((i // width) - y0) / max(y1 - y0, 1)
+                edge = min(u, 1 - u, v, 1 - v)
+                return "centre" if edge > 1 / 3 else "rim" if edge < 1 / 6 else "between"
+
+            whiter = {"centre": [], "rim": [], "between": []}
+            for i in ice:
+                whiter[where(i)].append(sum(look[i]) / 3 - sum(no_core[i]) / 3)
+            centre, rim = mean(whiter["centre"]), mean(whiter["rim"])
+            check("the block's centre is milkier than its rim", centre >= 20 and centre >= 3 * rim,
+                  "the core whitens the centre by %.1f/255, the rim by %.1f/255" % (centre, rim))
+    check("thick ice (the block) bluer than thin ice (the teapot's walls)",
+          blue_shift["block"] >= 15 and blue_shift["block"] >= 1.5 * blue_shift["teapot"],
+          "blue over red from absorption: block %.1f/255, teapot %.1f/255"
+          % (blue_shift["block"], blue_shift["teapot"]))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
