@@ -15,6 +15,7 @@
 #include "vtkRenderer.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
+#include "vtkPolyData.h"
 #include "vtkPNGWriter.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
@@ -461,6 +462,53 @@ BlockScene::BlockScene()
 BlockScene::~BlockScene() = default;
 
 Image BlockScene::Render()
+{
+  this->Window->Render();
+  return Capture(this->Window);
+}
+
+ClearSphereScene::ClearSphereScene()
+  : Renderer(vtkSmartPointer<vtkRenderer>::New())
+  , Mapper(vtkSmartPointer<vtkIceMapper>::New())
+  , Ice(vtkSmartPointer<vtkActor>::New())
+  , Pass(vtkSmartPointer<vtkIcePass>::New())
+  , Window(vtkSmartPointer<vtkRenderWindow>::New())
+{
+  vtkSmartPointer<vtkTexture> environment = MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
+  this->Renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(environment);
+  this->Renderer->AddActor(skybox);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(128);
+  sphere->SetPhiResolution(128);
+  sphere->Update();
+  sphere->GetOutput()->GetBounds(this->Bounds);
+  this->Mapper->SetInputData(sphere->GetOutput());
+  UseCleanOptics(this->Mapper);
+  this->Mapper->SetIndexOfRefraction(1.0);
+  this->Mapper->SetFresnelPower(1.0e6);
+  this->Ice->SetMapper(this->Mapper);
+  this->Renderer->AddActor(this->Ice);
+  this->Renderer->SetPass(this->Pass);
+  this->Window->SetSize(300, 300);
+  this->Window->SetOffScreenRendering(1);
+  this->Window->AddRenderer(this->Renderer);
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(1.5, 0.4, 3.2);
+  this->Renderer->ResetCameraClippingRange();
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  this->Interior = SphereInterior(this->Renderer, center, 1.0, 3);
+  this->Ice->VisibilityOff();
+  this->Background = this->Render();
+  this->Ice->VisibilityOn();
+}
+
+ClearSphereScene::~ClearSphereScene() = default;
+
+Image ClearSphereScene::Render()
 {
   this->Window->Render();
   return Capture(this->Window);

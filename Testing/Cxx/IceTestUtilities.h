@@ -128,6 +128,25 @@ struct BlockScene
   vtkSmartPointer<vtkRenderWindow> Window;
 };
 
+// An ice sphere (radius 1 at the origin, 128 segments, clean optics) that every view ray passes
+// straight through (IndexOfRefraction 1, no reflection), before a sky skybox, with vtkIcePass,
+// 300 x 300: the scene that holds the effects along the ray's chord against their references.
+// Background is the skybox alone; Interior the pixels at least 3 px inside the silhouette.
+struct ClearSphereScene
+{
+  ClearSphereScene();
+  ~ClearSphereScene();
+  Image Render();
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkIceMapper> Mapper;
+  vtkSmartPointer<vtkActor> Ice;
+  vtkSmartPointer<vtkIcePass> Pass;
+  vtkSmartPointer<vtkRenderWindow> Window;
+  double Bounds[6]; // of the sphere's polygons
+  std::vector<bool> Interior;
+  Image Background;
+};
+
 // Records the error and warning messages an object emits (and keeps them off the console).
 class MessageRecorder : public vtkCommand
 {

@@ -4,18 +4,10 @@
 // transmittance of the ray's chord through the sphere (vtkIceOpticsReference::Transmittance of
 // EyePathLength, with the sphere's exact front and back depths), for both two-sided methods.
 #include "IceTestUtilities.h"
-#include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
-#include "vtkIcePass.h"
 
-#include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkNew.h"
-#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSkybox.h"
-#include "vtkSphereSource.h"
-#include "vtkTexture.h"
 
 #include <algorithm>
 #include <cmath>
@@ -75,43 +67,9 @@ IceTest::Stats CompareWithReference(vtkRenderer* renderer, const IceTest::Image&
 
 int TestIceAbsorption(int, char*[])
 {
-  vtkSmartPointer<vtkTexture> environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetEnvironmentTexture(environment);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(environment);
-  renderer->AddActor(skybox);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(128);
-  sphere->SetPhiResolution(128);
-  vtkNew<vtkIceMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  IceTest::UseCleanOptics(mapper);
-  mapper->SetIndexOfRefraction(1.0);
-  mapper->SetFresnelPower(1.0e6);
-  vtkNew<vtkActor> ice;
-  ice->SetMapper(mapper);
-  renderer->AddActor(ice);
-  vtkNew<vtkIcePass> pass;
-  renderer->SetPass(pass);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(300, 300);
-  window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(1.5, 0.4, 3.2);
-  renderer->ResetCameraClippingRange();
-  const double center[3] = { 0.0, 0.0, 0.0 };
-  const std::vector<bool> interior = IceTest::SphereInterior(renderer, center, 1.0, 3);
-
-  ice->VisibilityOff();
-  window->Render();
-  const IceTest::Image background = IceTest::Capture(window);
-  ice->VisibilityOn();
-  mapper->SetAttenuationColor(AttenuationColor[0], AttenuationColor[1], AttenuationColor[2]);
-  mapper->SetAttenuationDistance(AttenuationDistance);
+  IceTest::ClearSphereScene scene;
+  scene.Mapper->SetAttenuationColor(AttenuationColor[0], AttenuationColor[1], AttenuationColor[2]);
+  scene.Mapper->SetAttenuationDistance(AttenuationDistance);
 
   bool ok = true;
   const struct
@@ -122,10 +80,9 @@ int TestIceAbsorption(int, char*[])
     { vtkIceMapper::TwoSidedExitPoint, "exit point" } };
   for (const auto& method : methods)
   {
-    mapper->SetTwoSidedMethod(method.Method);
-    window->Render();
+    scene.Mapper->SetTwoSidedMethod(method.Method);
     const IceTest::Stats stats =
-      CompareWithReference(renderer, background, IceTest::Capture(window), interior);
+      CompareWithReference(scene.Renderer, scene.Background, scene.Render(), scene.Interior);
     ok = IceTest::ReportReference(
            std::string("absorption along the chord, ") + method.Name, stats, 20000) &&
       ok;

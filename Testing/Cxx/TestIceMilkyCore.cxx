@@ -5,20 +5,10 @@
 // chord in the core's frame (the sphere's bounds, scaled by the radius). The centre is whiter
 // than the rim; a core of radius 0 changes no pixel; the paper passes draw none and say so.
 #include "IceTestUtilities.h"
-#include "vtkIceCubeMapSource.h"
 #include "vtkIceInteriorLook.h"
 #include "vtkIceMapper.h"
-#include "vtkIcePass.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkNew.h"
-#include "vtkPolyData.h"
-#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSkybox.h"
-#include "vtkSphereSource.h"
-#include "vtkTexture.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,78 +88,18 @@ Comparison CompareWithReference(vtkRenderer* renderer, const double bounds[6],
   comparison.RimWhiteness = whiteness[1] / std::max(counted[1], 1);
   return comparison;
 }
-
-int ChangedPixels(const IceTest::Image& a, const IceTest::Image& b)
-{
-  int changed = 0;
-  for (int y = 0; y < a.Height; ++y)
-  {
-    for (int x = 0; x < a.Width; ++x)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        if (a.At(x, y)[c] != b.At(x, y)[c])
-        {
-          ++changed;
-          break;
-        }
-      }
-    }
-  }
-  return changed;
-}
 }
 
 int TestIceMilkyCore(int, char*[])
 {
-  vtkSmartPointer<vtkTexture> environment = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetEnvironmentTexture(environment);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(environment);
-  renderer->AddActor(skybox);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(128);
-  sphere->SetPhiResolution(128);
-  sphere->Update();
-  double bounds[6];
-  sphere->GetOutput()->GetBounds(bounds);
-  vtkNew<vtkIceMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  IceTest::UseCleanOptics(mapper);
-  mapper->SetIndexOfRefraction(1.0);
-  mapper->SetFresnelPower(1.0e6);
-  mapper->SetMilkiness(Milkiness);
-  vtkNew<vtkActor> ice;
-  ice->SetMapper(mapper);
-  renderer->AddActor(ice);
-  vtkNew<vtkIcePass> pass;
-  renderer->SetPass(pass);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(300, 300);
-  window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(1.5, 0.4, 3.2);
-  renderer->ResetCameraClippingRange();
-  const double centre[3] = { 0.0, 0.0, 0.0 };
-  const std::vector<bool> interior = IceTest::SphereInterior(renderer, centre, 1.0, 3);
-
-  ice->VisibilityOff();
-  window->Render();
-  const IceTest::Image background = IceTest::Capture(window);
-  ice->VisibilityOn();
-  window->Render();
-  const IceTest::Image noCore = IceTest::Capture(window);
+  IceTest::ClearSphereScene scene;
+  scene.Mapper->SetMilkiness(Milkiness);
+  const IceTest::Image noCore = scene.Render();
 
   bool ok = true;
-  mapper->SetMilkyCoreRadius(CoreRadius);
-  window->Render();
-  const IceTest::Image withCore = IceTest::Capture(window);
-  const Comparison comparison =
-    CompareWithReference(renderer, bounds, background, withCore, interior);
+  scene.Mapper->SetMilkyCoreRadius(CoreRadius);
+  const Comparison comparison = CompareWithReference(
+    scene.Renderer, scene.Bounds, scene.Background, scene.Render(), scene.Interior);
   ok = IceTest::ReportReference("the milky core along the chord", comparison.Stats, 20000) && ok;
   std::cout << "whitening: centre " << comparison.CentreWhiteness << ", rim "
             << comparison.RimWhiteness << "\n";
@@ -181,9 +111,8 @@ int TestIceMilkyCore(int, char*[])
   }
 
   // Radius 0: no core, the picture of a mapper never given one.
-  mapper->SetMilkyCoreRadius(0.0);
-  window->Render();
-  const int changed = ChangedPixels(noCore, IceTest::Capture(window));
+  scene.Mapper->SetMilkyCoreRadius(0.0);
+  const size_t changed = IceTest::CountDiffering(noCore, scene.Render(), 0);
   if (changed != 0)
   {
     std::cerr << "MilkyCoreRadius 0 changed " << changed << " pixels\n";
