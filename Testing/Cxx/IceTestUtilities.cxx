@@ -508,6 +508,39 @@ ClearSphereScene::ClearSphereScene()
 
 ClearSphereScene::~ClearSphereScene() = default;
 
+Stats ClearSphereScene::CompareAlongChords(const Image& image, const Expected& expected)
+{
+  const double center[3] = { 0.0, 0.0, 0.0 };
+  std::vector<double> differences;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      if (!this->Interior[static_cast<size_t>(y) * image.Width + x])
+      {
+        continue;
+      }
+      double origin[3];
+      double direction[3];
+      double tNear;
+      double tFar;
+      PixelRay(this->Renderer, x, y, origin, direction);
+      IntersectSphere(origin, direction, center, 1.0, tNear, tFar);
+      const glm::dvec3 e(direction[0], direction[1], direction[2]);
+      const glm::dvec3 colour =
+        expected(x, y, glm::dvec3(origin[0], origin[1], origin[2]) + tNear * e, e, tFar - tNear);
+      const unsigned char* rendered = image.At(x, y);
+      double largest = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        largest = std::max(largest, std::abs(rendered[c] - colour[c]));
+      }
+      differences.push_back(largest);
+    }
+  }
+  return Summarize(differences);
+}
+
 Image ClearSphereScene::Render()
 {
   this->Window->Render();

@@ -137,6 +137,12 @@ struct ClearSphereScene
   ClearSphereScene();
   ~ClearSphereScene();
   Image Render();
+  // The colour a pixel should have (0-255 per channel) when its ray enters the sphere at `entry`
+  // along the unit `direction` and travels `chord` inside it.
+  using Expected = std::function<glm::dvec3(
+    int x, int y, const glm::dvec3& entry, const glm::dvec3& direction, double chord)>;
+  // |image - expected| (the largest channel) over the interior pixels.
+  Stats CompareAlongChords(const Image& image, const Expected& expected);
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkIceMapper> Mapper;
   vtkSmartPointer<vtkActor> Ice;

@@ -8,13 +8,11 @@
 #include "vtkIceInteriorLook.h"
 #include "vtkIceMapper.h"
 
-#include "vtkRenderer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <vector>
 
 namespace
 {
@@ -28,62 +26,40 @@ struct Comparison
   double RimWhiteness = 0.0;    // the same, outer third
 };
 
-// Interior pixels of the unit sphere: |rendered - reference|, and how white centre and rim are.
-Comparison CompareWithReference(vtkRenderer* renderer, const double bounds[6],
-  const IceTest::Image& background, const IceTest::Image& image, const std::vector<bool>& interior)
+// Every interior pixel: the background behind it seen through the core along its chord; how
+// white the core makes the inner and the outer third of the disk.
+Comparison CompareWithReference(IceTest::ClearSphereScene& scene, const IceTest::Image& image)
 {
   glm::dvec3 centre;
   glm::dvec3 scale;
   for (int axis = 0; axis < 3; ++axis)
   {
+    const double* bounds = scene.Bounds;
     centre[axis] = 0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]);
     scale[axis] = 1.0 / (0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]) * CoreRadius);
   }
   const double density = vtkIceInteriorLook::CoreDensity(Milkiness);
-  const double sphereCentre[3] = { 0.0, 0.0, 0.0 };
-  std::vector<double> differences;
   double whiteness[2] = { 0.0, 0.0 };
   int counted[2] = { 0, 0 };
-  for (int y = 0; y < image.Height; ++y)
-  {
-    for (int x = 0; x < image.Width; ++x)
-    {
-      if (!interior[static_cast<size_t>(y) * image.Width + x])
-      {
-        continue;
-      }
-      double origin[3];
-      double direction[3];
-      double tNear;
-      double tFar;
-      IceTest::PixelRay(renderer, x, y, origin, direction);
-      IceTest::IntersectSphere(origin, direction, sphereCentre, 1.0, tNear, tFar);
-      const glm::dvec3 e(direction[0], direction[1], direction[2]);
-      const glm::dvec3 entry = glm::dvec3(origin[0], origin[1], origin[2]) + tNear * e;
-      const double depth = vtkIceOpticsReference::CoreOpticalDepth(
-        (entry - centre) * scale, e * scale, tFar - tNear, density);
-      const double covered = 1.0 - std::exp(-depth);
-      const unsigned char* behind = background.At(x, y);
-      const unsigned char* rendered = image.At(x, y);
-      double largest = 0.0;
-      for (int c = 0; c < 3; ++c)
-      {
-        const double core = 255.0 * vtkIceInteriorLook::CoreColour[c];
-        largest =
-          std::max(largest, std::abs(rendered[c] - (behind[c] + covered * (core - behind[c]))));
-      }
-      differences.push_back(largest);
+  Comparison comparison;
+  comparison.Stats = scene.CompareAlongChords(
+    image, [&](int x, int y, const glm::dvec3& entry, const glm::dvec3& e, double chord) {
+      const double covered = 1.0 -
+        std::exp(-vtkIceOpticsReference::CoreOpticalDepth(
+          (entry - centre) * scale, e * scale, chord, density));
       // The ray's closest approach to the centre: the inner or the outer third of the disk.
-      const double miss = glm::length(glm::cross(entry - glm::dvec3(0.0), e));
+      const double miss = glm::length(glm::cross(entry, e));
       if (miss < 1.0 / 3.0 || miss > 2.0 / 3.0)
       {
         whiteness[miss < 1.0 / 3.0 ? 0 : 1] += covered;
         ++counted[miss < 1.0 / 3.0 ? 0 : 1];
       }
-    }
-  }
-  Comparison comparison;
-  comparison.Stats = IceTest::Summarize(differences);
+      const unsigned char* behind = scene.Background.At(x, y);
+      const glm::dvec3 background(behind[0], behind[1], behind[2]);
+      const glm::dvec3 core(vtkIceInteriorLook::CoreColour[0], vtkIceInteriorLook::CoreColour[1],
+        vtkIceInteriorLook::CoreColour[2]);
+      return background + covered * (255.0 * core - background);
+    });
   comparison.CentreWhiteness = whiteness[0] / std::max(counted[0], 1);
   comparison.RimWhiteness = whiteness[1] / std::max(counted[1], 1);
   return comparison;
@@ -98,8 +74,7 @@ int TestIceMilkyCore(int, char*[])
 
   bool ok = true;
   scene.Mapper->SetMilkyCoreRadius(CoreRadius);
-  const Comparison comparison = CompareWithReference(
-    scene.Renderer, scene.Bounds, scene.Background, scene.Render(), scene.Interior);
+  const Comparison comparison = CompareWithReference(scene, scene.Render());
   ok = IceTest::ReportReference("the milky core along the chord", comparison.Stats, 20000) && ok;
   std::cout << "whitening: centre " << comparison.CentreWhiteness << ", rim "
             << comparison.RimWhiteness << "\n";
