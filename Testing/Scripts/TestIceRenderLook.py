@@ -14,7 +14,8 @@ import vtk
 
 ICE_RENDER, WORK = sys.argv[1], sys.argv[2]
 SIZE = "96x72"
-BASE = ["--model", "sphere", "--static", "--size", SIZE]
+# The library's defaults (the paper preset): each option changes that look.
+BASE = ["--model", "sphere", "--static", "--size", SIZE, "--preset", "paper"]
 failures = 0
 
 
