@@ -8,7 +8,6 @@
 #include "vtkIceInteriorLook.h"
 #include "vtkIceMapper.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
