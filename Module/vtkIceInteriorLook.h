@@ -31,6 +31,18 @@ inline double CoreDensity(double milkiness)
   return CoreOpticalDepth * milkiness / 1.772453850905516;
 }
 
+// The core's frame for ice of these (model) bounds: its centre, and the scale per axis from model
+// coordinates to the frame where the core's radius is 1.
+inline void CoreFrame(const double bounds[6], double radius, double centre[3], double scale[3])
+{
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double half = 0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]);
+    centre[axis] = 0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]);
+    scale[axis] = 1.0 / (half * radius > 1.0e-12 ? half * radius : 1.0e-12);
+  }
+}
+
 inline double CrackBumpFrequency(double extent)
 {
   return CrackBumpCells / extent;

@@ -557,13 +557,8 @@ void vtkIceMapper::SetIceShaderParameters(
       if (this->HasMilkyCore())
       {
         settings.CoreDensity = vtkIceInteriorLook::CoreDensity(this->Milkiness);
-        for (int axis = 0; axis < 3; ++axis)
-        {
-          const double half = 0.5 * (settings.Bounds[2 * axis + 1] - settings.Bounds[2 * axis]);
-          settings.CoreCenter[axis] =
-            0.5 * (settings.Bounds[2 * axis] + settings.Bounds[2 * axis + 1]);
-          settings.CoreScale[axis] = 1.0 / std::max(half * this->MilkyCoreRadius, 1.0e-12);
-        }
+        vtkIceInteriorLook::CoreFrame(
+          settings.Bounds, this->MilkyCoreRadius, settings.CoreCenter, settings.CoreScale);
       }
       settings.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
         : this->DebugView == DebugAir                        ? vtkIceInteriorLook::DebugAir

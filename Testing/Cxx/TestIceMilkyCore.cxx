@@ -29,14 +29,11 @@ struct Comparison
 // white the core makes the inner and the outer third of the disk.
 Comparison CompareWithReference(IceTest::ClearSphereScene& scene, const IceTest::Image& image)
 {
-  glm::dvec3 centre;
-  glm::dvec3 scale;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    const double* bounds = scene.Bounds;
-    centre[axis] = 0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]);
-    scale[axis] = 1.0 / (0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]) * CoreRadius);
-  }
+  double frameCentre[3];
+  double frameScale[3];
+  vtkIceInteriorLook::CoreFrame(scene.Bounds, CoreRadius, frameCentre, frameScale);
+  const glm::dvec3 centre(frameCentre[0], frameCentre[1], frameCentre[2]);
+  const glm::dvec3 scale(frameScale[0], frameScale[1], frameScale[2]);
   const double density = vtkIceInteriorLook::CoreDensity(Milkiness);
   double whiteness[2] = { 0.0, 0.0 };
   int counted[2] = { 0, 0 };
