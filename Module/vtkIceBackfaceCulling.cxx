@@ -1,6 +1,5 @@
 #include "vtkIceBackfaceCulling.h"
 
-#include "vtkIcePass.h"
 #include "vtkIceRenderPasses.h"
 
 #include "vtkActor.h"
@@ -57,9 +56,9 @@ bool vtkIceBackfaceCulling::BackfacesHidden(
 //------------------------------------------------------------------------------
 bool vtkIceBackfaceCulling::InSubPass(vtkActor* actor)
 {
-  return vtkIceRenderPasses::Find(actor, [](vtkObjectBase* pass) {
-    return vtkIcePass::SafeDownCast(pass) == nullptr;
-  }) != nullptr;
+  // By name, not by its header: vtkIcePass depends on the mapper, which depends on this.
+  return vtkIceRenderPasses::Find(
+           actor, [](vtkObjectBase* pass) { return !pass->IsA("vtkIcePass"); }) != nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 #include "vtkIceBackfaceNormalPass.h"
 
 #include "vtkIceBackfaceNormalFS.h"
-#include "vtkIceMapper.h"
+#include "vtkIceMapperAccess.h"
 #include "vtkIceScreenTarget.h"
 #include "vtkIceShaderSections.h"
 
@@ -53,9 +53,9 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    if (vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(prop))
+    if (vtkIceMapper* mapper = vtkIceMapperAccess::Of(prop))
     {
-      mapper->RenderCracks(renderer, static_cast<vtkActor*>(prop), false);
+      vtkIceMapperAccess::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), false);
     }
   }
   this->PostRender(s);

@@ -1,7 +1,7 @@
 #include "vtkIceCubeMapPass.h"
 
 #include "vtkIceCubeMapCompositor.h"
-#include "vtkIceMapper.h"
+#include "vtkIceMapperAccess.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
@@ -115,8 +115,7 @@ std::vector<vtkProp*> SceneProps(vtkRenderer* renderer)
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    if (prop->GetVisibility() && vtkProp3D::SafeDownCast(prop) &&
-      !vtkIceMapper::GetIceMapperOf(prop))
+    if (prop->GetVisibility() && vtkProp3D::SafeDownCast(prop) && !vtkIceMapperAccess::Of(prop))
     {
       scene.push_back(prop);
     }

@@ -2,12 +2,12 @@
 
 #include "vtkIceBackfaceCulling.h"
 #include "vtkIceBumpFS.h"
+#include "vtkIceFrame.h"
 #include "vtkIceGlistening.h"
 #include "vtkIceGlisteningTexture.h"
 #include "vtkIceInterior.h"
 #include "vtkIceInteriorLook.h"
 #include "vtkIceOptics.h"
-#include "vtkIcePass.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceSinglePassInterior.h"
 #include "vtkIceStaticEnvironment.h"
@@ -224,13 +224,6 @@ double vtkIceMapper::GetAttenuationDistanceMaxValue()
 }
 
 //------------------------------------------------------------------------------
-vtkIceMapper* vtkIceMapper::GetIceMapperOf(vtkProp* prop)
-{
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return actor && actor->GetVisibility() ? vtkIceMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-}
-
-//------------------------------------------------------------------------------
 bool vtkIceMapper::Absorbs() const
 {
   return std::isfinite(this->AttenuationDistance) &&
@@ -270,26 +263,26 @@ int vtkIceMapper::GetFrameNeeds()
   int needs = 0;
   if (this->TwoSidedRefraction)
   {
-    needs |= NeedsBackfaceNormals;
+    needs |= vtkIceFrame::NeedsBackfaceNormals;
   }
   if (this->Absorbs())
   {
-    needs |= NeedsPathLength;
+    needs |= vtkIceFrame::NeedsPathLength;
   }
   const int view = this->DebugView;
   if (view == DebugFrontDepth || view == DebugBackDepth ||
     (this->CracksPerturbRefraction && this->NumberOfCracks > 0))
   {
-    needs |= NeedsDepthIntervalBeforeScene;
+    needs |= vtkIceFrame::NeedsDepthIntervalBeforeScene;
   }
   if (this->UsesSinglePassInterior())
   {
-    needs |= NeedsBackDepthForInterior;
+    needs |= vtkIceFrame::NeedsBackDepthForInterior;
   }
   else if (this->HasInterior())
   {
     // The paper's cracks and air are clipped by the interval and drawn at the ice's front depth.
-    needs |= NeedsDepthIntervalForInterior;
+    needs |= vtkIceFrame::NeedsDepthIntervalForInterior;
   }
   return needs;
 }
@@ -327,22 +320,23 @@ bool vtkIceMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer*
 //------------------------------------------------------------------------------
 void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
-  if (this->HelpersSawPass && !vtkIcePass::GetIcePassOf(act))
+  // The frame of vtkIcePass drawing this ice now, if any.
+  vtkIceFrame* frame = vtkIceFrame::Of(act);
+  if (this->HelpersSawPass && !frame)
   {
     // The pass is gone from this ice: its cracks and air, drawn only by it, let it go.
     this->Interior->ForgetRenderPasses();
     this->HelpersSawPass = false;
   }
   // A dynamic cube map is handed to the shader by the pass that rendered it.
-  vtkIcePass* pass = vtkIcePass::GetIcePassOf(act);
-  this->ActiveEnvironmentObject = pass && pass->GetCubeMapOf(act)
+  this->ActiveEnvironmentObject = frame && frame->CubeMapOf(act)
     ? nullptr
     : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
   if (this->NormalMap && this->BumpStrength > 0.0)
   {
     this->NormalMap->Render(ren);
   }
-  this->WarnSettingsWithoutEffect(pass != nullptr);
+  this->WarnSettingsWithoutEffect(frame != nullptr);
   this->Superclass::RenderPieceStart(ren, act);
   // The closure check costs about a frame of a large input (1M triangles: 0.3-0.7 s), once per
   // input: a still input pays it at its second frame in the main scene, an input changed every

@@ -458,40 +458,9 @@ public:
   vtkPolyData* GetCrackGeometry();
 
   /**
-   * Draws the cracks of `actor` (vtkIcePass calls it). `overlay`: over the rendered scene, with
-   * additive blending; otherwise with the current state (into the back-face normal texture).
-   */
-  void RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
-
-  /**
-   * Draws the air planes of `actor` over the rendered scene (vtkIcePass calls it), sorted back to
-   * front for the current camera.
-   */
-  void RenderAir(vtkRenderer* ren, vtkActor* actor);
-
-  /**
-   * Number of crack draw calls since creation (one per RenderCracks with cracks).
+   * Number of crack draw calls since creation (one per frame step that draws this ice's cracks).
    */
   vtkGetMacro(NumberOfCrackDraws, vtkIdType);
-
-  /**
-   * What this ice needs vtkIcePass to render for it in a frame: FrameNeeds bits. The pass
-   * renders a texture only when some ice prop needs it, and hands it to the shaders.
-   */
-  enum FrameNeeds
-  {
-    NeedsBackfaceNormals = 1,          // two-sided refraction (TwoSidedRefraction)
-    NeedsDepthIntervalBeforeScene = 2, // depth debug views; cracks in the back-face normals
-    NeedsDepthIntervalForInterior = 4, // its own interval, right before its cracks and air
-    NeedsBackDepthForInterior = 8,     // the back-face target's depth (InteriorSinglePass)
-    NeedsPathLength = 16               // the back-face target's depth (absorption)
-  };
-  int GetFrameNeeds();
-
-  /**
-   * The vtkIceMapper of `prop` if it is a visible vtkActor drawn by one, else null.
-   */
-  static vtkIceMapper* GetIceMapperOf(vtkProp* prop);
 
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
@@ -504,6 +473,13 @@ public:
 protected:
   vtkIceMapper();
   ~vtkIceMapper() override;
+
+  // What vtkIcePass asks of the mapper in a frame (vtkIceMapperAccess, inside the module): what
+  // this ice needs rendered for it (vtkIceFrame::Need bits), its cracks and its air drawn.
+  friend class vtkIceMapperAccess;
+  int GetFrameNeeds();
+  void RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
+  void RenderAir(vtkRenderer* ren, vtkActor* actor);
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;

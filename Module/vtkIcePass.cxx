@@ -5,8 +5,9 @@
 #include "vtkIceDebugDepthFS.h"
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceExitPointFS.h"
-#include "vtkIceFrameTextures.h"
+#include "vtkIceFrame.h"
 #include "vtkIceMapper.h"
+#include "vtkIceMapperAccess.h"
 #include "vtkIceRenderPasses.h"
 #include "vtkIceRendererSteps.h"
 #include "vtkIceScreenRegion.h"
@@ -36,6 +37,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <vector>
 
 vtkStandardNewMacro(vtkIcePass);
@@ -52,13 +54,14 @@ public:
   void Render(const vtkRenderState* s) override
   {
     this->NumberOfRenderedProps = 0;
-    if (this->Owner && this->IceState)
+    if (this->Draw && this->IceState)
     {
-      this->Owner->RenderOverlays(s, this->IceState);
+      this->Draw(s, this->IceState);
     }
   }
-  vtkIcePass* Owner = nullptr;              // not counted: the owner holds this step
-  const vtkRenderState* IceState = nullptr; // the ice props, while the frame renders
+  // The owner's RenderOverlays; the ice props while the frame renders.
+  std::function<void(const vtkRenderState*, const vtkRenderState*)> Draw;
+  const vtkRenderState* IceState = nullptr;
 };
 vtkStandardNewMacro(vtkIceOverlayStep);
 
@@ -91,7 +94,6 @@ bool DrawnByIceSubPass(vtkProp* prop)
 
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
-  : FrameTextures(new vtkIceFrameTextures)
 {
   // The steps of the renderer's own rendering, with its settings (vtkIceRendererSteps.h), and
   // the ice's air and cracks right after the opaque geometry.
@@ -100,7 +102,9 @@ vtkIcePass::vtkIcePass()
   this->VolumeStep = vtkIceVolumeStep::New();
   this->VolumeStep->Translucent = this->TranslucentStep;
   this->OverlayStep = vtkIceOverlayStep::New();
-  this->OverlayStep->Owner = this;
+  this->OverlayStep->Draw = [this](const vtkRenderState* s, const vtkRenderState* iceState) {
+    this->RenderOverlays(s, iceState);
+  };
   vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
   this->DefaultDelegate = steps;
   this->SetDelegatePass(this->DefaultDelegate);
@@ -181,10 +185,10 @@ void vtkIcePass::Render(const vtkRenderState* s)
   int needs = 0;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    if (vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(s->GetPropArray()[i]))
+    if (vtkIceMapper* mapper = vtkIceMapperAccess::Of(s->GetPropArray()[i]))
     {
       iceProps.push_back(s->GetPropArray()[i]);
-      needs |= mapper->GetFrameNeeds();
+      needs |= vtkIceMapperAccess::FrameNeeds(mapper);
     }
   }
   this->NumberOfIceProps = static_cast<int>(iceProps.size());
@@ -200,11 +204,11 @@ void vtkIcePass::Render(const vtkRenderState* s)
   // The default delegate draws air and cracks after the opaque geometry; another delegate gets
   // them over its finished frame.
   const bool overlaysInDelegate = this->DelegatePass == this->DefaultDelegate;
-  this->OverlayStep->IceState = this->IceState && overlaysInDelegate ? &iceState : nullptr;
+  this->OverlayStep->IceState = this->Frame && overlaysInDelegate ? &iceState : nullptr;
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->OverlayStep->IceState = nullptr;
-  if (this->IceState && !overlaysInDelegate)
+  if (this->Frame && !overlaysInDelegate)
   {
     this->RenderOverlays(s, &iceState);
   }
@@ -215,37 +219,42 @@ void vtkIcePass::Render(const vtkRenderState* s)
 void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
 {
   // From here to the end of the frame this pass is one of the ice props' render passes: it
-  // hands its textures to their shaders (and to their cracks' and air's, which share the keys).
-  this->IceState = iceState;
+  // hands its textures to their shaders (and to their cracks' and air's, which share the keys);
+  // the frame is published on them for their mappers.
+  this->Frame = vtkIceFrame::New();
+  if (vtkIceCubeMapPass* cubeMaps = this->CubeMapPass)
+  {
+    this->Frame->CubeMaps = [cubeMaps](vtkProp* prop) { return cubeMaps->GetCubeMap(prop); };
+  }
+  this->Frame->Begin(iceState, needs);
   this->PreRender(iceState);
   if (this->CubeMapPass)
   {
     this->CubeMapPass->Render(iceState);
   }
-  if (needs & vtkIceMapper::NeedsDepthIntervalBeforeScene)
+  if (needs & vtkIceFrame::NeedsDepthIntervalBeforeScene)
   {
     this->RenderDepthInterval(iceState);
   }
   if (needs &
-    (vtkIceMapper::NeedsBackfaceNormals | vtkIceMapper::NeedsBackDepthForInterior |
-      vtkIceMapper::NeedsPathLength))
+    (vtkIceFrame::NeedsBackfaceNormals | vtkIceFrame::NeedsBackDepthForInterior |
+      vtkIceFrame::NeedsPathLength))
   {
     this->BackfaceNormalPass->Render(iceState);
-    this->BackfaceNormals = this->BackfaceNormalPass->GetNormalTexture();
+    this->Frame->BackfaceNormals = this->BackfaceNormalPass->GetNormalTexture();
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkIcePass::EndFrame()
 {
-  this->FrameTextures->ReleaseAll();
-  this->BoundCubeMap = nullptr;
-  this->BackfaceNormals = nullptr;
-  this->DepthInterval = nullptr;
-  if (this->IceState)
+  if (this->Frame)
   {
-    this->PostRender(this->IceState);
-    this->IceState = nullptr;
+    const vtkRenderState* iceState = this->Frame->IceState;
+    this->Frame->End();
+    this->Frame->Delete();
+    this->Frame = nullptr;
+    this->PostRender(iceState);
   }
 }
 
@@ -288,8 +297,8 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];
-    vtkIceMapper* mapper = vtkIceMapper::GetIceMapperOf(prop);
-    if (!(mapper->GetFrameNeeds() & vtkIceMapper::NeedsDepthIntervalForInterior))
+    vtkIceMapper* mapper = vtkIceMapperAccess::Of(prop);
+    if (!(vtkIceMapperAccess::FrameNeeds(mapper) & vtkIceFrame::NeedsDepthIntervalForInterior))
     {
       continue;
     }
@@ -298,9 +307,9 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
     propState.SetFrameBuffer(s->GetFrameBuffer());
     this->RenderDepthInterval(&propState);
     scissorToIce(prop, false);
-    mapper->RenderAir(renderer, static_cast<vtkActor*>(prop));
+    vtkIceMapperAccess::DrawAir(mapper, renderer, static_cast<vtkActor*>(prop));
     scissorToIce(prop, mapper->GetDebugView() == vtkIceMapper::DebugCracksUnclipped);
-    mapper->RenderCracks(renderer, static_cast<vtkActor*>(prop), true);
+    vtkIceMapperAccess::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), true);
   }
 }
 
@@ -308,23 +317,10 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
 void vtkIcePass::RenderDepthInterval(const vtkRenderState* s)
 {
   // Not sampled while it is drawn into.
-  this->FrameTextures->Release(this->DepthIntervalPass->GetDepthTexture());
-  this->DepthInterval = nullptr;
+  this->Frame->Textures.Release(this->DepthIntervalPass->GetDepthTexture());
+  this->Frame->DepthInterval = nullptr;
   this->DepthIntervalPass->Render(s);
-  this->DepthInterval = this->DepthIntervalPass->GetDepthTexture();
-}
-
-//------------------------------------------------------------------------------
-vtkIcePass* vtkIcePass::GetIcePassOf(vtkProp* prop)
-{
-  return vtkIcePass::SafeDownCast(vtkIceRenderPasses::Find(
-    prop, [](vtkObjectBase* pass) { return vtkIcePass::SafeDownCast(pass) != nullptr; }));
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkIcePass::GetCubeMapOf(vtkProp* prop)
-{
-  return this->IceState && this->CubeMapPass ? this->CubeMapPass->GetCubeMap(prop) : nullptr;
+  this->Frame->DepthInterval = this->DepthIntervalPass->GetDepthTexture();
 }
 
 //------------------------------------------------------------------------------
@@ -336,12 +332,13 @@ bool vtkIcePass::PostReplaceShaderValues(
   // the same every frame, and a change of needs modifies the mapper: the program is rebuilt
   // whenever this answer changes.
   vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(abstractMapper);
-  if (!mapper || DrawnByIceSubPass(prop))
+  if (!mapper || !this->Frame || DrawnByIceSubPass(prop))
   {
     return true;
   }
   using vtkIceShaderSections::Get;
-  const int needs = mapper->GetFrameNeeds();
+  const int needs = vtkIceMapperAccess::FrameNeeds(mapper);
+  vtkTextureObject* backfaceNormals = this->Frame->BackfaceNormals;
   // The back-face target's sampler, unless a snippet inserted here declared it already.
   const auto declareBackNormals = [&fs]() {
     if (fs.find("uniform sampler2D iceBackNormals;") == std::string::npos)
@@ -349,19 +346,19 @@ bool vtkIcePass::PostReplaceShaderValues(
       vtkIceShaderSections::InsertDeclarations(fs, "uniform sampler2D iceBackNormals;\n");
     }
   };
-  const bool exitPoint = this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackfaceNormals) &&
+  const bool exitPoint = backfaceNormals && (needs & vtkIceFrame::NeedsBackfaceNormals) &&
     mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint;
   if (exitPoint)
   {
     vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceExitPointFS, "Dec"));
     vtkIceShaderSections::FillHook(fs, "RefractionDirection", Get(vtkIceExitPointFS, "Impl"));
   }
-  else if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackfaceNormals))
+  else if (backfaceNormals && (needs & vtkIceFrame::NeedsBackfaceNormals))
   {
     vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
     vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
   }
-  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsPathLength))
+  if (backfaceNormals && (needs & vtkIceFrame::NeedsPathLength))
   {
     // The exit point's own path; else the eye ray's between the front and back faces.
     declareBackNormals();
@@ -370,13 +367,13 @@ bool vtkIcePass::PostReplaceShaderValues(
                 : "icePathLength = iceEyePathLength(e, iceViewDirectionWC, iceViewDepth(),\n"
                   "      texelFetch(iceBackNormals, iceScreenTexel(), 0).a);");
   }
-  if (this->BackfaceNormals && (needs & vtkIceMapper::NeedsBackDepthForInterior))
+  if (backfaceNormals && (needs & vtkIceFrame::NeedsBackDepthForInterior))
   {
     declareBackNormals();
     vtkIceShaderSections::FillHook(fs, "Interior", vtkIceSinglePassInterior::Call());
   }
   const int view = mapper->GetDebugView();
-  if (this->DepthInterval &&
+  if (this->Frame->DepthInterval &&
     (view == vtkIceMapper::DebugFrontDepth || view == vtkIceMapper::DebugBackDepth))
   {
     vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceDebugDepthFS, "Dec"));
@@ -389,27 +386,28 @@ bool vtkIcePass::PostReplaceShaderValues(
 bool vtkIcePass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  if (!this->IceState)
+  vtkIceFrame* frame = this->Frame;
+  if (!frame)
   {
     return true;
   }
-  vtkRenderer* renderer = this->IceState->GetRenderer();
-  this->FrameTextures->BindScreen(program, renderer, "iceBackNormals", this->BackfaceNormals);
-  if (this->FrameTextures->BindScreen(program, renderer, "iceDepthInterval", this->DepthInterval))
+  vtkRenderer* renderer = frame->IceState->GetRenderer();
+  frame->Textures.BindScreen(program, renderer, "iceBackNormals", frame->BackfaceNormals);
+  if (frame->Textures.BindScreen(program, renderer, "iceDepthInterval", frame->DepthInterval))
   {
     const double* range = this->DepthIntervalPass->GetDepthRange();
     program->SetUniform2f("iceDepthRange",
       std::array<float, 2>{ static_cast<float>(range[0]), static_cast<float>(range[1]) }.data());
   }
-  if (vtkTextureObject* cubeMap = this->GetCubeMapOf(prop))
+  if (vtkTextureObject* cubeMap = frame->CubeMapOf(prop))
   {
     // One prop's cube map at a time keeps one texture unit however many ice props there are.
-    if (this->BoundCubeMap && this->BoundCubeMap != cubeMap)
+    if (frame->BoundCubeMap && frame->BoundCubeMap != cubeMap)
     {
-      this->FrameTextures->Release(this->BoundCubeMap);
+      frame->Textures.Release(frame->BoundCubeMap);
     }
-    this->BoundCubeMap = cubeMap;
-    this->FrameTextures->Bind(program, "iceEnvironment", cubeMap);
+    frame->BoundCubeMap = cubeMap;
+    frame->Textures.Bind(program, "iceEnvironment", cubeMap);
   }
   return true;
 }
@@ -418,7 +416,10 @@ bool vtkIcePass::SetShaderParameters(
 void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  this->FrameTextures->ReleaseAll();
+  if (this->Frame)
+  {
+    this->Frame->Textures.ReleaseAll();
+  }
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
   this->DepthIntervalPass->ReleaseGraphicsResources(w);
   if (this->CubeMapPass)

@@ -13,7 +13,7 @@
  * pass, and the camera's stereo projection follows the window.
  *
  * Sub-passes, in the order they run before the delegate, each only when an ice mapper needs what
- * it renders (vtkIceMapper::GetFrameNeeds):
+ * it renders (what each ice mapper needs in a frame):
  * 1. environment: with a vtkIceCubeMapPass set (SetCubeMapPass), each ice prop gets a cube map of
  *    the scene around it (dynamic environment); without one, the renderer's environment texture
  *    is used (static environment),
@@ -23,7 +23,7 @@
  * The pass owns the frame's textures. For the frame it is one of the render passes of each ice
  * prop (vtkOpenGLRenderPass): when an ice shader is built it adds the code that samples the
  * textures it has ready (PostReplaceShaderValues), and when one is bound it hands them over
- * (SetShaderParameters); the mappers keep no per-frame state.
+ * (SetShaderParameters); the mappers keep no per-frame state and never call the pass.
  * Right after the opaque geometry (before translucent geometry, when the delegate is the default
  * one; after the delegate otherwise) it draws, ice prop by ice prop, the prop's own depth interval
  * and its air planes (blended back to front) and cracks (highlights added), clipped to that
@@ -38,18 +38,14 @@
 #include "RenderingIceModule.h" // for export macro
 #include "vtkOpenGLRenderPass.h"
 
-#include <memory> // for members
-
 class vtkIceBackfaceNormalPass;
 class vtkIceCubeMapPass;
 class vtkIceDepthIntervalPass;
-class vtkIceFrameTextures;
+class vtkIceFrame;
 class vtkIceOpaqueStep;
 class vtkIceOverlayStep;
 class vtkIceTranslucentStep;
 class vtkIceVolumeStep;
-
-class vtkTextureObject;
 
 class RENDERINGICE_EXPORT vtkIcePass : public vtkOpenGLRenderPass
 {
@@ -89,24 +85,6 @@ public:
    */
   vtkGetMacro(NumberOfIceProps, int);
 
-  /**
-   * Draws the ice props of `iceState` over what `s` rendered so far, one by one: the prop's own
-   * depth interval (so that the interior of one ice is never clipped by another's), its air, then
-   * its cracks. Called by the pass itself after the opaque geometry.
-   */
-  void RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState);
-
-  /**
-   * The vtkIcePass rendering a frame of `prop` now (one of its render passes), or null.
-   */
-  static vtkIcePass* GetIcePassOf(vtkProp* prop);
-
-  /**
-   * The dynamic cube map the pass hands to the shaders of `prop` this frame, or null (the mapper
-   * then binds the renderer's environment).
-   */
-  vtkTextureObject* GetCubeMapOf(vtkProp* prop);
-
   ///@{
   /**
    * vtkOpenGLRenderPass: the code sampling the frame's textures goes into the ice shaders, and
@@ -128,15 +106,16 @@ protected:
   // Renders the depth interval of the props of `s`; the shaders get it from then on.
   void RenderDepthInterval(const vtkRenderState* s);
 
+  // Draws the ice props of `iceState` over what `s` rendered so far, one by one: the prop's own
+  // depth interval (so that the interior of one ice is never clipped by another's), its air,
+  // then its cracks. After the opaque geometry (a step of the default delegate).
+  void RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState);
+
   // Ends the frame: its textures are no longer handed over.
   void EndFrame();
 
-  // The textures handed to the shaders: ready when rendered in this frame, else null.
-  vtkTextureObject* BackfaceNormals = nullptr;
-  vtkTextureObject* DepthInterval = nullptr;
-  const vtkRenderState* IceState = nullptr;
-  std::unique_ptr<vtkIceFrameTextures> FrameTextures;
-  vtkTextureObject* BoundCubeMap = nullptr;
+  // What the frame being rendered knows (vtkIceFrame.h); null between frames.
+  vtkIceFrame* Frame = nullptr;
 
   vtkIceOverlayStep* OverlayStep = nullptr;
 

@@ -1,0 +1,70 @@
+// What one frame of vtkIcePass knows about the ice it draws: the ice props and what they need,
+// the textures ready so far and their texture units, the dynamic cube maps. The pass makes one
+// for each frame with ice; from the start of the ice's sub-passes to the end of the scene it is
+// published on each ice prop (Of), where the prop's mapper finds it: the mapper knows the frame,
+// not the pass. Inside the module only.
+#ifndef vtkIceFrame_h
+#define vtkIceFrame_h
+
+#include "vtkIceFrameTextures.h"
+#include "vtkObject.h"
+
+#include <functional>
+
+class vtkInformationObjectBaseKey;
+class vtkProp;
+class vtkRenderState;
+class vtkTextureObject;
+
+class vtkIceFrame : public vtkObject
+{
+public:
+  static vtkIceFrame* New();
+  vtkTypeMacro(vtkIceFrame, vtkObject);
+
+  // What an ice prop needs the pass to render for it (vtkIceMapper's GetFrameNeeds): a texture
+  // is rendered only when some ice prop of the frame needs it.
+  enum Need
+  {
+    NeedsBackfaceNormals = 1,          // two-sided refraction (TwoSidedRefraction)
+    NeedsDepthIntervalBeforeScene = 2, // depth debug views; cracks in the back-face normals
+    NeedsDepthIntervalForInterior = 4, // its own interval, right before its cracks and air
+    NeedsBackDepthForInterior = 8,     // the back-face target's depth (InteriorSinglePass)
+    NeedsPathLength = 16               // the back-face target's depth (absorption)
+  };
+
+  // Publishes the frame on the props of `iceState` (their property keys) until End.
+  void Begin(const vtkRenderState* iceState, int needs);
+  // Releases the frame's texture units and withdraws it from the props.
+  void End();
+
+  // The frame drawing `prop` now, or null.
+  static vtkIceFrame* Of(vtkProp* prop);
+
+  // The dynamic cube map handed to the shaders of `prop` in this frame, or null (the mapper then
+  // binds the renderer's environment).
+  vtkTextureObject* CubeMapOf(vtkProp* prop) const;
+
+  // The key the frame is published under on an ice prop's property keys.
+  static vtkInformationObjectBaseKey* FRAME();
+
+  const vtkRenderState* IceState = nullptr; // the ice props, between Begin and End
+  int Needs = 0;                            // of all the ice props
+  // The textures handed to the shaders: set when rendered in this frame, else null.
+  vtkTextureObject* BackfaceNormals = nullptr;
+  vtkTextureObject* DepthInterval = nullptr;
+  vtkTextureObject* BoundCubeMap = nullptr; // one prop's cube map bound at a time
+  vtkIceFrameTextures Textures;             // their texture units
+  // The dynamic cube maps of the pass's cube-map pass, if it has one.
+  std::function<vtkTextureObject*(vtkProp*)> CubeMaps;
+
+protected:
+  vtkIceFrame() = default;
+  ~vtkIceFrame() override = default;
+
+private:
+  vtkIceFrame(const vtkIceFrame&) = delete;
+  void operator=(const vtkIceFrame&) = delete;
+};
+
+#endif
