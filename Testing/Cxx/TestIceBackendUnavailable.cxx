@@ -14,7 +14,9 @@
 
 namespace
 {
-bool Expect(const std::string& what, const std::string& error, const std::string& start,
+// One line per check, as IceTest::Expect prints it, with the error the back end gave: it starts
+// with `start`, holds `contains` and is one line.
+bool ExpectError(const std::string& what, const std::string& error, const std::string& start,
   const std::string& contains = std::string())
 {
   const bool ok = error.compare(0, start.size(), start) == 0 &&
@@ -33,25 +35,26 @@ int TestIceBackendUnavailable(int, char*[])
   unsetenv("DISPLAY");
   setenv("VTKICE_EGL_DEVICE", "99", 1);
   setenv("VTKICE_OSMESA_LIBRARY", "/nonexistent/libOSMesa.so.8", 1);
-  ok = Expect("x without DISPLAY", IceHeadless::Install("x"),
+  ok = ExpectError("x without DISPLAY", IceHeadless::Install("x"),
          "x back end unavailable: DISPLAY is not set") &&
     ok;
-  ok = Expect("egl with a device that does not exist", IceHeadless::Install("egl"),
+  ok = ExpectError("egl with a device that does not exist", IceHeadless::Install("egl"),
          "egl back end unavailable: EGL device 99 does not exist") &&
     ok;
 #if VTKICE_HEADLESS_OSMESA
-  ok = Expect("osmesa without its library", IceHeadless::Install("osmesa"),
+  ok = ExpectError("osmesa without its library", IceHeadless::Install("osmesa"),
          "osmesa back end unavailable: ", "/nonexistent/libOSMesa.so.8") &&
     ok;
 #else
-  ok = Expect("osmesa in a build without it", IceHeadless::Install("osmesa"),
+  ok = ExpectError("osmesa in a build without it", IceHeadless::Install("osmesa"),
          "osmesa back end unavailable: this build has no osmesa back end") &&
     ok;
 #endif
-  ok = Expect("auto with none of them", IceHeadless::Install("auto"),
+  ok = ExpectError("auto with none of them", IceHeadless::Install("auto"),
          "no rendering back end works (x: DISPLAY is not set; egl: EGL device 99", "; osmesa: ") &&
     ok;
-  ok = Expect("unknown name", IceHeadless::Install("vulkan"), "unknown back end 'vulkan'") && ok;
+  ok =
+    ExpectError("unknown name", IceHeadless::Install("vulkan"), "unknown back end 'vulkan'") && ok;
   const bool unchanged = IceHeadless::Installed() == before;
   std::cout << (unchanged ? "ok   " : "FAIL ") << "failed installs leave the back end at "
             << IceHeadless::BackendName(IceHeadless::Installed()) << "\n";
@@ -72,7 +75,7 @@ int TestIceBackendUnavailable(int, char*[])
     std::cout << (once ? "ok   " : "FAIL ")
               << "window on an unavailable back end: " << messages->Errors.size() << " error(s)\n";
     ok = once && ok;
-    ok = Expect("its error", messages->Errors.empty() ? "" : messages->Errors[0],
+    ok = ExpectError("its error", messages->Errors.empty() ? "" : messages->Errors[0],
            "egl back end unavailable: EGL device 99 does not exist") &&
       ok;
   }

@@ -176,10 +176,10 @@ bool NearlyInvisible()
   return ok;
 }
 
-bool Expect(bool condition, const std::string& what, vtkIdType renders)
+// IceTest::Expect, with the pass's count of face renders so far.
+bool ExpectRenders(bool condition, const std::string& what, vtkIdType renders)
 {
-  std::cout << (condition ? "ok   " : "FAIL ") << what << " (" << renders << " face renders)\n";
-  return condition;
+  return IceTest::Expect(condition, what + " (" + std::to_string(renders) + " face renders)");
 }
 
 bool UpdateModes()
@@ -198,26 +198,26 @@ bool UpdateModes()
     plain->SetPosition(3.0, 0.0, 0.0);
     room.Renderer->AddActor(plain);
     room.Window->Render();
-    ok = Expect(pass->GetNumberOfFaceRenders() == 6, "on change: first frame renders 6 faces",
-           pass->GetNumberOfFaceRenders()) &&
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 6,
+           "on change: first frame renders 6 faces", pass->GetNumberOfFaceRenders()) &&
       ok;
     room.Window->Render();
     room.Renderer->GetActiveCamera()->Azimuth(30.0);
     room.Renderer->ResetCameraClippingRange();
     room.Window->Render();
-    ok = Expect(pass->GetNumberOfFaceRenders() == 6,
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 6,
            "on change: a still scene and a moving camera render nothing",
            pass->GetNumberOfFaceRenders()) &&
       ok;
     room.Walls[0][0]->SetPosition(0.5, 0.0, 0.0);
     room.Window->Render();
-    ok = Expect(pass->GetNumberOfFaceRenders() == 12, "on change: moving a wall re-renders",
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 12, "on change: moving a wall re-renders",
            pass->GetNumberOfFaceRenders()) &&
       ok;
     room.Walls[2][1]->GetProperty()->SetColor(1.0, 1.0, 1.0);
     room.Window->Render();
-    ok = Expect(pass->GetNumberOfFaceRenders() == 18, "on change: recolouring a wall re-renders",
-           pass->GetNumberOfFaceRenders()) &&
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 18,
+           "on change: recolouring a wall re-renders", pass->GetNumberOfFaceRenders()) &&
       ok;
   }
   {
@@ -227,13 +227,13 @@ bool UpdateModes()
     room.Window->Render();
     room.Walls[0][0]->SetPosition(0.5, 0.0, 0.0);
     room.Window->Render();
-    ok = Expect(pass->GetNumberOfFaceRenders() == 6, "manual: a change renders nothing",
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 6, "manual: a change renders nothing",
            pass->GetNumberOfFaceRenders()) &&
       ok;
     pass->Update();
     room.Window->Render();
     room.Window->Render();
-    ok = Expect(pass->GetNumberOfFaceRenders() == 12, "manual: Update() renders once",
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 12, "manual: Update() renders once",
            pass->GetNumberOfFaceRenders()) &&
       ok;
   }
@@ -245,12 +245,12 @@ bool UpdateModes()
     {
       room.Window->Render();
     }
-    ok = Expect(pass->GetNumberOfFaceRenders() == 18, "every frame: 3 frames render 18 faces",
-           pass->GetNumberOfFaceRenders()) &&
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 18,
+           "every frame: 3 frames render 18 faces", pass->GetNumberOfFaceRenders()) &&
       ok;
     pass->SetFacesPerFrame(2);
     room.Window->Render();
-    ok = Expect(pass->GetNumberOfFaceRenders() == 20, "time slicing: 2 faces per frame",
+    ok = ExpectRenders(pass->GetNumberOfFaceRenders() == 20, "time slicing: 2 faces per frame",
            pass->GetNumberOfFaceRenders()) &&
       ok;
   }
