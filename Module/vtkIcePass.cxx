@@ -1,5 +1,6 @@
 #include "vtkIcePass.h"
 
+#include "vtkIceBackNormalsFS.h"
 #include "vtkIceBackfaceNormalPass.h"
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceDebugDepthFS.h"
@@ -339,13 +340,14 @@ bool vtkIcePass::PostReplaceShaderValues(
   using vtkIceShaderSections::Get;
   const int needs = vtkIceMapperAccess::FrameNeeds(mapper);
   vtkTextureObject* backfaceNormals = this->Frame->BackfaceNormals;
-  // The back-face target's sampler, unless a snippet inserted here declared it already.
-  const auto declareBackNormals = [&fs]() {
-    if (fs.find("uniform sampler2D iceBackNormals;") == std::string::npos)
-    {
-      vtkIceShaderSections::InsertDeclarations(fs, "uniform sampler2D iceBackNormals;\n");
-    }
-  };
+  // The back-face target's sampler, declared once before the parts below that sample it.
+  if (backfaceNormals &&
+    (needs &
+      (vtkIceFrame::NeedsBackfaceNormals | vtkIceFrame::NeedsPathLength |
+        vtkIceFrame::NeedsBackDepthForInterior)))
+  {
+    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceBackNormalsFS, "Dec"));
+  }
   const bool exitPoint = backfaceNormals && (needs & vtkIceFrame::NeedsBackfaceNormals) &&
     mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint;
   if (exitPoint)
@@ -361,7 +363,6 @@ bool vtkIcePass::PostReplaceShaderValues(
   if (backfaceNormals && (needs & vtkIceFrame::NeedsPathLength))
   {
     // The exit point's own path; else the eye ray's between the front and back faces.
-    declareBackNormals();
     vtkIceShaderSections::FillHook(fs, "PathLength",
       exitPoint ? "icePathLength = iceExitPathLength;"
                 : "icePathLength = iceEyePathLength(e, iceViewDirectionWC, iceViewDepth(),\n"
@@ -369,7 +370,6 @@ bool vtkIcePass::PostReplaceShaderValues(
   }
   if (backfaceNormals && (needs & vtkIceFrame::NeedsBackDepthForInterior))
   {
-    declareBackNormals();
     vtkIceShaderSections::FillHook(fs, "Interior", vtkIceSinglePassInterior::Call());
   }
   const int view = mapper->GetDebugView();

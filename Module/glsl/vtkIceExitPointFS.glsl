@@ -3,8 +3,7 @@
 // eye ray is refracted at the front surface (eq 2), followed through the ice to where it leaves,
 // found in image space from the back faces' view depth, and refracted again there, ice to air.
 // Mirrored on the CPU by vtkIceOpticsReference::ExitPointDirection: change both together.
-uniform sampler2D iceBackNormals; // nearest back face: RGB world normal, A view depth (0: no ice)
-uniform mat4 iceWCDCMatrix;       // world to normalised device coordinates
+uniform mat4 iceWCDCMatrix; // world to normalised device coordinates
 
 // The back-face texel under the point whose clip coordinates are `clip`.
 vec4 iceBackUnder(vec4 clip)
