@@ -14,6 +14,7 @@
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceSinglePassInterior.h"
+#include "vtkIceStepTimers.h"
 #include "vtkIceTwoSidedFS.h"
 
 #include "vtkActor.h"
@@ -134,6 +135,7 @@ vtkIcePass::~vtkIcePass()
   this->VolumeStep->Delete();
   this->BackfaceNormalPass->Delete();
   this->DepthIntervalPass->Delete();
+  delete this->StepTimers;
 }
 
 //------------------------------------------------------------------------------
@@ -181,6 +183,14 @@ void vtkIcePass::Render(const vtkRenderState* s)
   {
     renderer->GetActiveCamera()->Render(renderer);
   }
+  if (this->MeasureStepTimes)
+  {
+    if (!this->StepTimers)
+    {
+      this->StepTimers = new vtkIceStepTimers;
+    }
+    this->StepTimers->BeginFrame();
+  }
 
   std::vector<vtkProp*> iceProps;
   int needs = 0;
@@ -206,7 +216,9 @@ void vtkIcePass::Render(const vtkRenderState* s)
   // them over its finished frame.
   const bool overlaysInDelegate = this->DelegatePass == this->DefaultDelegate;
   this->OverlayStep->IceState = this->Frame && overlaysInDelegate ? &iceState : nullptr;
+  this->StartStep(SceneStep);
   this->DelegatePass->Render(s);
+  this->StopStep(SceneStep);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->OverlayStep->IceState = nullptr;
   if (this->Frame && !overlaysInDelegate)
@@ -231,17 +243,23 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
   this->PreRender(iceState);
   if (this->CubeMapPass)
   {
+    this->StartStep(CubeMapStep);
     this->CubeMapPass->Render(iceState);
+    this->StopStep(CubeMapStep);
   }
   if (needs & vtkIceFrame::NeedsDepthIntervalBeforeScene)
   {
+    this->StartStep(DepthIntervalStep);
     this->RenderDepthInterval(iceState);
+    this->StopStep(DepthIntervalStep);
   }
   if (needs &
     (vtkIceFrame::NeedsBackfaceNormals | vtkIceFrame::NeedsBackDepthForInterior |
       vtkIceFrame::NeedsPathLength))
   {
+    this->StartStep(BackfaceNormalStep);
     this->BackfaceNormalPass->Render(iceState);
+    this->StopStep(BackfaceNormalStep);
     this->Frame->BackfaceNormals = this->BackfaceNormalPass->GetNormalTexture();
   }
 }
@@ -262,6 +280,13 @@ void vtkIcePass::EndFrame()
 //------------------------------------------------------------------------------
 void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState)
 {
+  // Timed only when some ice has an interior to draw here.
+  const bool interior =
+    this->Frame && (this->Frame->Needs & vtkIceFrame::NeedsDepthIntervalForInterior);
+  if (interior)
+  {
+    this->StartStep(InteriorStep);
+  }
   vtkRenderer* renderer = s->GetRenderer();
   vtkOpenGLState* state =
     static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow())->GetState();
@@ -312,6 +337,38 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
     scissorToIce(prop, mapper->GetDebugView() == vtkIceMapper::DebugCracksUnclipped);
     vtkIceMapperAccess::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), true);
   }
+  if (interior)
+  {
+    this->StopStep(InteriorStep);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIcePass::StartStep(int step)
+{
+  if (this->MeasureStepTimes && this->StepTimers)
+  {
+    this->StepTimers->Start(step);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIcePass::StopStep(int step)
+{
+  if (this->MeasureStepTimes && this->StepTimers)
+  {
+    this->StepTimers->Stop(step);
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkIcePass::GetStepTime(int step)
+{
+  if (!this->MeasureStepTimes || !this->StepTimers || step < 0 || step >= NumberOfSteps)
+  {
+    return -1.0;
+  }
+  return this->StepTimers->Get(step);
 }
 
 //------------------------------------------------------------------------------
@@ -422,6 +479,10 @@ void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
   this->DepthIntervalPass->ReleaseGraphicsResources(w);
+  if (this->StepTimers)
+  {
+    this->StepTimers->ReleaseGraphicsResources();
+  }
   if (this->CubeMapPass)
   {
     this->CubeMapPass->ReleaseGraphicsResources(w);
@@ -445,4 +506,5 @@ void vtkIcePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DelegatePass: " << this->DelegatePass << "\n";
   os << indent << "CubeMapPass: " << this->CubeMapPass << "\n";
   os << indent << "NumberOfIceProps: " << this->NumberOfIceProps << "\n";
+  os << indent << "MeasureStepTimes: " << this->MeasureStepTimes << "\n";
 }

@@ -45,6 +45,7 @@ class vtkIceFrame;
 class vtkIceOpaqueStep;
 class vtkIceOverlayStep;
 class vtkIceTranslucentStep;
+class vtkIceStepTimers;
 class vtkIceVolumeStep;
 
 class RENDERINGICE_EXPORT vtkIcePass : public vtkOpenGLRenderPass
@@ -87,6 +88,40 @@ public:
 
   ///@{
   /**
+   * Measures the GPU time of each step of the frame (OpenGL timestamp queries). Off by default.
+   * The times are read without waiting for the GPU: a frame's times are collected at the start
+   * of a later frame, once the GPU has finished them (after a glFinish, at the next frame).
+   */
+  vtkSetMacro(MeasureStepTimes, bool);
+  vtkGetMacro(MeasureStepTimes, bool);
+  vtkBooleanMacro(MeasureStepTimes, bool);
+  ///@}
+
+  /**
+   * The steps GetStepTime reports: the cube maps of the dynamic environment (all their faces),
+   * the depth interval of all the ice before the scene, the back faces' normals and depth, the
+   * scene (the delegate: every prop, the ice surfaces with their single-pass interior, and the
+   * interior step when the default delegate draws it), and the interior of the paper's passes
+   * (each ice's own depth interval, air and cracks).
+   */
+  enum Steps
+  {
+    CubeMapStep = 0,
+    DepthIntervalStep,
+    BackfaceNormalStep,
+    SceneStep,
+    InteriorStep,
+    NumberOfSteps
+  };
+
+  /**
+   * The latest measured GPU time of `step` (Steps) in milliseconds, or -1 when the step did not
+   * run in the frame measured last, or MeasureStepTimes is off.
+   */
+  double GetStepTime(int step);
+
+  ///@{
+  /**
    * vtkOpenGLRenderPass: the code sampling the frame's textures goes into the ice shaders, and
    * the textures to the programs sampling them.
    */
@@ -114,6 +149,10 @@ protected:
   // Ends the frame: its textures are no longer handed over.
   void EndFrame();
 
+  // Bracket a step's GPU time when MeasureStepTimes is on.
+  void StartStep(int step);
+  void StopStep(int step);
+
   // What the frame being rendered knows (vtkIceFrame.h); null between frames.
   vtkIceFrame* Frame = nullptr;
 
@@ -128,6 +167,8 @@ protected:
   vtkIceCubeMapPass* CubeMapPass = nullptr;
   vtkIceDepthIntervalPass* DepthIntervalPass = nullptr;
   int NumberOfIceProps = 0;
+  bool MeasureStepTimes = false;
+  vtkIceStepTimers* StepTimers = nullptr; // while MeasureStepTimes is on
 
 private:
   vtkIcePass(const vtkIcePass&) = delete;

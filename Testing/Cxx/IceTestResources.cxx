@@ -170,7 +170,7 @@ std::string GLCensus::Describe() const
   text << this->Total() << " (" << this->Textures << " textures, " << this->Buffers << " buffers, "
        << this->Framebuffers << " framebuffers, " << this->Renderbuffers << " renderbuffers, "
        << this->VertexArrays << " vertex arrays, " << this->Programs << " programs, "
-       << this->Shaders << " shaders)";
+       << this->Shaders << " shaders, " << this->Queries << " queries)";
   return text.str();
 }
 
@@ -198,6 +198,7 @@ GLCensus TakeGLCensus(vtkRenderWindow* window)
     count(glIsVertexArray(name), census.VertexArrays);
     count(glIsProgram(name), census.Programs);
     count(glIsShader(name), census.Shaders);
+    count(glIsQuery(name), census.Queries);
     if (used)
     {
       HighestNameSeen = std::max(HighestNameSeen, name);

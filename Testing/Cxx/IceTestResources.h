@@ -15,9 +15,9 @@ std::string TakeGLErrors(vtkRenderWindow* window);
 
 // How many names of each kind of OpenGL object exist in the window's context, found by probing
 // every name with glIs* (textures, buffers, framebuffers, renderbuffers, vertex arrays, shader
-// programs, shaders). Names are small integers handed out by the driver; the probe covers 1 to
-// past the largest name in use (and past the largest ever seen by this census), so a leak of any
-// object of these kinds shows as a larger count.
+// programs, shaders, queries). Names are small integers handed out by the driver; the probe covers
+// 1 to past the largest name in use (and past the largest ever seen by this census), so a leak of
+// any object of these kinds shows as a larger count.
 struct GLCensus
 {
   int Textures = 0;
@@ -27,10 +27,11 @@ struct GLCensus
   int VertexArrays = 0;
   int Programs = 0;
   int Shaders = 0;
+  int Queries = 0;
   int Total() const
   {
     return this->Textures + this->Buffers + this->Framebuffers + this->Renderbuffers +
-      this->VertexArrays + this->Programs + this->Shaders;
+      this->VertexArrays + this->Programs + this->Shaders + this->Queries;
   }
   std::string Describe() const;
 };

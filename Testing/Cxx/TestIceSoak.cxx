@@ -63,10 +63,11 @@ void ConfigureFullIce(vtkIceMapper* mapper, int seed)
 }
 
 // The full ice pass: two-sided refraction, the depth interval (cracks, air) and a dynamic cube
-// map of the scene rendered for every ice prop every frame.
+// map of the scene rendered for every ice prop every frame, with its steps' GPU times measured.
 vtkSmartPointer<vtkIcePass> MakeFullIcePass(int faceSize)
 {
   auto pass = vtkSmartPointer<vtkIcePass>::New();
+  pass->MeasureStepTimesOn();
   vtkNew<vtkIceCubeMapPass> cubeMaps;
   cubeMaps->SetUpdateModeToEveryFrame();
   cubeMaps->SetFaceSize(faceSize);
@@ -367,7 +368,7 @@ bool Soak::Checkpoint(int frame)
   const bool grew = now.Textures > reference.Textures || now.Buffers > reference.Buffers ||
     now.Framebuffers > reference.Framebuffers || now.Renderbuffers > reference.Renderbuffers ||
     now.VertexArrays > reference.VertexArrays || now.Programs > reference.Programs ||
-    now.Shaders > reference.Shaders;
+    now.Shaders > reference.Shaders || now.Queries > reference.Queries;
   if (grew)
   {
     std::cout << "FAIL OpenGL objects grew after the warm-up: " << reference.Describe() << " -> "
