@@ -5,6 +5,7 @@
 #ifndef IceBench_h
 #define IceBench_h
 
+#include <array>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -18,6 +19,12 @@ namespace IceBench
 // The window every configuration is timed in.
 constexpr int Width = 1024;
 constexpr int Height = 768;
+
+// The GPU-timed steps of vtkIcePass's frame (vtkIcePass::Steps, in that order) and their names
+// in the CSV (gpu_NAME_ms) and the tables.
+constexpr int Steps = 5;
+const std::array<const char*, Steps> StepNames = { "cube_map", "depth_interval", "back_faces",
+  "scene", "interior" };
 
 enum class Material
 {
@@ -62,6 +69,10 @@ struct Configuration
   double Ratio = 0.0;             // median / the group's plain VTK median
   double CpuRatio = 0.0;          // the same for CPU time: less sensitive to other load
   double CubeFacesPerFrame = 0.0; // measured over the timed frames
+  // GPU milliseconds of each step of vtkIcePass (MeasureStepTimes) per timed frame where it was
+  // measured (a frame's times arrive at the next frame), and their medians (-1: not measured).
+  std::array<std::vector<double>, Steps> StepTimes;
+  std::array<double, Steps> StepMedians = { -1.0, -1.0, -1.0, -1.0, -1.0 };
 };
 
 struct Group

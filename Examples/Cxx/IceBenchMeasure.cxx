@@ -5,6 +5,7 @@
 #include "IceScene.h"
 
 #include "vtkIceCubeMapPass.h"
+#include "vtkIcePass.h"
 
 #include "vtkActor.h"
 #include "vtkRenderWindow.h"
@@ -16,6 +17,8 @@
 #include <cmath>
 #include <ctime>
 #include <vector>
+
+static_assert(IceBench::Steps == vtkIcePass::NumberOfSteps, "ice-bench times every step");
 
 namespace
 {
@@ -128,6 +131,17 @@ void MeasureGroup(
         const double milliseconds = frame(i);
         g.Configurations[i].CpuTimes.push_back(ProcessCpuMilliseconds() - cpuStart);
         g.Configurations[i].Times.push_back(milliseconds);
+        if (vtkIcePass* pass = vtkIcePass::SafeDownCast(scenes[i].Renderer->GetPass()))
+        {
+          for (int step = 0; step < IceBench::Steps; ++step)
+          {
+            const double time = pass->GetStepTime(step);
+            if (time >= 0.0)
+            {
+              g.Configurations[i].StepTimes[step].push_back(time);
+            }
+          }
+        }
       }
       if (scenes[i].CubeMapPass)
       {
@@ -140,6 +154,10 @@ void MeasureGroup(
     Configuration& c = g.Configurations[i];
     c.Stats = Summarize(c.Times);
     c.CpuMedian = Summarize(c.CpuTimes).Median;
+    for (int step = 0; step < IceBench::Steps; ++step)
+    {
+      c.StepMedians[step] = c.StepTimes[step].empty() ? -1.0 : Summarize(c.StepTimes[step]).Median;
+    }
     c.CubeFacesPerFrame =
       c.Times.empty() ? 0.0 : static_cast<double>(faces[i]) / static_cast<double>(c.Times.size());
   }
@@ -183,6 +201,11 @@ void IceBench::RunGroup(Group& g, vtkRenderWindow* window, vtkPolyData* object,
   for (Configuration& c : g.Configurations)
   {
     Scene scene = BuildScene(g, c, object, environment);
+    // Where the time goes: GPU timer queries around each step of the ice's frame.
+    if (vtkIcePass* pass = vtkIcePass::SafeDownCast(scene.Renderer->GetPass()))
+    {
+      pass->MeasureStepTimesOn();
+    }
     IceScene::PlaceCamera(scene.Renderer, g.CameraDistance);
     scene.Renderer->SetDraw(0);
     window->AddRenderer(scene.Renderer);

@@ -17,6 +17,8 @@ using IceBench::Group;
 using IceBench::Height;
 using IceBench::Machine;
 using IceBench::Material;
+using IceBench::StepNames;
+using IceBench::Steps;
 using IceBench::Width;
 
 std::string CoverageText(const Group& g)
@@ -67,14 +69,33 @@ const char* MaterialName(Material m)
   return "";
 }
 
+// The measured steps' median GPU times, e.g. "back_faces 1.50, scene 20.84"; "" when none.
+std::string StepTimesText(const Configuration& c)
+{
+  std::string text;
+  for (int step = 0; step < Steps; ++step)
+  {
+    if (c.StepMedians[step] >= 0.0)
+    {
+      text += (text.empty() ? "" : ", ") + std::string(StepNames[step]) + " " +
+        Fixed(c.StepMedians[step], 2);
+    }
+  }
+  return text;
+}
+
 std::string Csv(const std::vector<Group>& groups, const Machine& machine)
 {
   std::ostringstream out;
   out << "group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,interior,"
          "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
          "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
-         "cube_faces_per_frame,"
-         "renderer,multisamples\n";
+         "cube_faces_per_frame,";
+  for (const char* step : StepNames)
+  {
+    out << "gpu_" << step << "_ms,";
+  }
+  out << "renderer,multisamples\n";
   const char* modes[3] = { "every-frame", "on-change", "manual" };
   for (const Group& g : groups)
   {
@@ -95,8 +116,12 @@ std::string Csv(const std::vector<Group>& groups, const Machine& machine)
           << Fixed(c.Stats.Max, 3) << "," << Fixed(c.Stats.Mean, 3) << ","
           << Fixed(1000.0 / c.Stats.Median, 2) << "," << Fixed(g.Configurations[0].Stats.Median, 3)
           << "," << Fixed(c.Ratio, 4) << "," << Fixed(c.CpuMedian, 3) << "," << Fixed(c.CpuRatio, 4)
-          << "," << Fixed(c.CubeFacesPerFrame, 3) << ",\"" << machine.Renderer << "\","
-          << machine.MultiSamples << "\n";
+          << "," << Fixed(c.CubeFacesPerFrame, 3) << ",";
+      for (double median : c.StepMedians)
+      {
+        out << (median >= 0.0 ? Fixed(median, 3) : "") << ",";
+      }
+      out << "\"" << machine.Renderer << "\"," << machine.MultiSamples << "\n";
     }
   }
   return out.str();
@@ -127,15 +152,15 @@ std::string Markdown(const std::vector<Group>& groups, const std::vector<IceBenc
     out << "\n**" << g.Title << "** (" << g.Triangles << " triangles, object covers "
         << CoverageText(g) << " of the window)\n\n";
     out << "| configuration | median ms | IQR ms | min - max ms | fps | ratio | CPU ms | CPU ratio "
-           "|\n";
-    out << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+           "| GPU ms by step |\n";
+    out << "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
     for (const Configuration& c : g.Configurations)
     {
       out << "| " << c.Label << " | " << Fixed(c.Stats.Median, 2) << " | " << Fixed(c.Stats.P25, 2)
           << " - " << Fixed(c.Stats.P75, 2) << " | " << Fixed(c.Stats.Min, 2) << " - "
           << Fixed(c.Stats.Max, 2) << " | " << Fixed(1000.0 / c.Stats.Median, 1) << " | "
           << Fixed(c.Ratio, 2) << " | " << Fixed(c.CpuMedian, 1) << " | " << Fixed(c.CpuRatio, 2)
-          << " |\n";
+          << " | " << StepTimesText(c) << " |\n";
     }
   }
   return out.str();
@@ -175,6 +200,11 @@ void IceBench::PrintGroup(std::ostream& out, const Group& g)
         << (Fixed(c.Stats.P25, 2) + " - " + Fixed(c.Stats.P75, 2)) << std::setw(9)
         << Fixed(1000.0 / c.Stats.Median, 1) << std::setw(8) << Fixed(c.Ratio, 2) << std::setw(10)
         << Fixed(c.CpuMedian, 1) << std::setw(10) << Fixed(c.CpuRatio, 2) << "\n";
+    const std::string steps = StepTimesText(c);
+    if (!steps.empty())
+    {
+      out << "     GPU ms by step: " << steps << "\n";
+    }
   }
 }
 

@@ -25,7 +25,8 @@ import csv, math, sys
 expected = ("group,object,triangles,scene,coverage,configuration,material,cracks,air_planes,interior,"
             "cube_map,update_mode,face_size,faces_per_frame,culling,moving,frames,median_ms,p25_ms,"
             "p75_ms,min_ms,max_ms,mean_ms,fps,baseline_median_ms,ratio,cpu_median_ms,cpu_ratio,"
-            "cube_faces_per_frame,"
+            "cube_faces_per_frame,gpu_cube_map_ms,gpu_depth_interval_ms,gpu_back_faces_ms,"
+            "gpu_scene_ms,gpu_interior_ms,"
             "renderer,multisamples").split(",")
 problems = []
 with open("bench.csv", newline="") as f:
@@ -96,6 +97,22 @@ for r in data:
         problems.append("%s: cube map fields without a cube map" % where)
     if not r["renderer"]:
         problems.append("%s: no renderer string" % where)
+    # GPU times by step (vtkIcePass::MeasureStepTimes): only with the pass, for the steps it runs.
+    gpu = {k[4:-3]: r[k] for k in r if k.startswith("gpu_")}
+    with_pass = r["material"] not in ("plain", "one-sided")
+    timed = {step for step, value in gpu.items() if value}
+    wanted = set()
+    if with_pass:
+        wanted = {"scene"}
+        if r["cube_map"] == "1" and t["cube_faces_per_frame"] > 0:
+            wanted.add("cube_map")
+        if r["interior"] == "paper-passes" and (cracks or air):
+            wanted.add("interior")
+    no_interior = r["interior"] == "single-pass" or not (cracks or air)
+    if not wanted <= timed or (not with_pass and timed) or (no_interior and "interior" in timed):
+        problems.append("%s: GPU steps timed %s, wanted at least %s" % (where, sorted(timed), sorted(wanted)))
+    if any(value and not (float(value) >= 0 and math.isfinite(float(value))) for value in gpu.values()):
+        problems.append("%s: a GPU step time is not a finite number >= 0" % where)
 crack_counts = [(int(r["cracks"]), r["interior"]) for r in groups.get("cracks-teapot", [])[1:]]
 if crack_counts != [(n, m) for m in ("single-pass", "paper-passes") for n in (0, 2, 8)]:
     problems.append("cracks-teapot counts %r" % crack_counts)
