@@ -35,6 +35,7 @@ void vtkIceFrame::End()
   this->BoundCubeMap = nullptr;
   this->BackfaceNormals = nullptr;
   this->DepthInterval = nullptr;
+  this->CubeMaps = nullptr;
   if (this->IceState)
   {
     for (int i = 0; i < this->IceState->GetPropArrayCount(); ++i)

@@ -1,8 +1,8 @@
 // What one frame of vtkIcePass knows about the ice it draws: the ice props and what they need,
-// the textures ready so far and their texture units, the dynamic cube maps. The pass makes one
-// for each frame with ice; from the start of the ice's sub-passes to the end of the scene it is
-// published on each ice prop (Of), where the prop's mapper finds it: the mapper knows the frame,
-// not the pass. Inside the module only.
+// the textures ready so far and their texture units, the dynamic cube maps. The pass holds one and
+// begins and ends it with each frame with ice; in between (from the start of the ice's sub-passes
+// to the end of the scene) it is published on each ice prop (Of), where the prop's mapper finds
+// it: the mapper knows the frame, not the pass. Inside the module only.
 #ifndef vtkIceFrame_h
 #define vtkIceFrame_h
 
@@ -37,6 +37,8 @@ public:
   void Begin(const vtkRenderState* iceState, int needs);
   // Releases the frame's texture units and withdraws it from the props.
   void End();
+  // Between Begin and End.
+  bool Active() const { return this->IceState != nullptr; }
 
   // The frame drawing `prop` now, or null.
   static vtkIceFrame* Of(vtkProp* prop);

@@ -96,6 +96,7 @@ bool DrawnByIceSubPass(vtkProp* prop)
 
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
+  : Frame(vtkIceFrame::New())
 {
   // The steps of the renderer's own rendering, with its settings (vtkIceRendererSteps.h), and
   // the ice's air and cracks right after the opaque geometry.
@@ -136,6 +137,7 @@ vtkIcePass::~vtkIcePass()
   this->BackfaceNormalPass->Delete();
   this->DepthIntervalPass->Delete();
   delete this->StepTimers;
+  this->Frame->Delete();
 }
 
 //------------------------------------------------------------------------------
@@ -215,13 +217,13 @@ void vtkIcePass::Render(const vtkRenderState* s)
   // The default delegate draws air and cracks after the opaque geometry; another delegate gets
   // them over its finished frame.
   const bool overlaysInDelegate = this->DelegatePass == this->DefaultDelegate;
-  this->OverlayStep->IceState = this->Frame && overlaysInDelegate ? &iceState : nullptr;
+  this->OverlayStep->IceState = this->Frame->Active() && overlaysInDelegate ? &iceState : nullptr;
   this->StartStep(SceneStep);
   this->DelegatePass->Render(s);
   this->StopStep(SceneStep);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->OverlayStep->IceState = nullptr;
-  if (this->Frame && !overlaysInDelegate)
+  if (this->Frame->Active() && !overlaysInDelegate)
   {
     this->RenderOverlays(s, &iceState);
   }
@@ -234,7 +236,6 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
   // From here to the end of the frame this pass is one of the ice props' render passes: it
   // hands its textures to their shaders (and to their cracks' and air's, which share the keys);
   // the frame is published on them for their mappers.
-  this->Frame = vtkIceFrame::New();
   if (vtkIceCubeMapPass* cubeMaps = this->CubeMapPass)
   {
     this->Frame->CubeMaps = [cubeMaps](vtkProp* prop) { return cubeMaps->GetCubeMap(prop); };
@@ -267,12 +268,10 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
 //------------------------------------------------------------------------------
 void vtkIcePass::EndFrame()
 {
-  if (this->Frame)
+  if (this->Frame->Active())
   {
     const vtkRenderState* iceState = this->Frame->IceState;
     this->Frame->End();
-    this->Frame->Delete();
-    this->Frame = nullptr;
     this->PostRender(iceState);
   }
 }
@@ -282,7 +281,7 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
 {
   // Timed only when some ice has an interior to draw here.
   const bool interior =
-    this->Frame && (this->Frame->Needs & vtkIceFrame::NeedsDepthIntervalForInterior);
+    this->Frame->Active() && (this->Frame->Needs & vtkIceFrame::NeedsDepthIntervalForInterior);
   if (interior)
   {
     this->StartStep(InteriorStep);
@@ -390,7 +389,7 @@ bool vtkIcePass::PostReplaceShaderValues(
   // the same every frame, and a change of needs modifies the mapper: the program is rebuilt
   // whenever this answer changes.
   vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(abstractMapper);
-  if (!mapper || !this->Frame || DrawnByIceSubPass(prop))
+  if (!mapper || !this->Frame->Active() || DrawnByIceSubPass(prop))
   {
     return true;
   }
@@ -444,7 +443,7 @@ bool vtkIcePass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   vtkIceFrame* frame = this->Frame;
-  if (!frame)
+  if (!frame->Active())
   {
     return true;
   }
@@ -473,10 +472,7 @@ bool vtkIcePass::SetShaderParameters(
 void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
-  if (this->Frame)
-  {
-    this->Frame->Textures.ReleaseAll();
-  }
+  this->Frame->Textures.ReleaseAll();
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
   this->DepthIntervalPass->ReleaseGraphicsResources(w);
   if (this->StepTimers)

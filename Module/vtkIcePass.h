@@ -153,7 +153,7 @@ protected:
   void StartStep(int step);
   void StopStep(int step);
 
-  // What the frame being rendered knows (vtkIceFrame.h); null between frames.
+  // What the frame being rendered knows (vtkIceFrame.h), begun and ended with each frame of ice.
   vtkIceFrame* Frame = nullptr;
 
   vtkIceOverlayStep* OverlayStep = nullptr;
