@@ -59,6 +59,8 @@ public:
   vtkIceFrameTextures Textures;             // their texture units
   // The dynamic cube maps of the pass's cube-map pass, if it has one.
   std::function<vtkTextureObject*(vtkProp*)> CubeMaps;
+  // Changes whenever the cube-map pass renders a face (for copies made of the cube maps).
+  vtkMTimeType CubeMapVersion = 0;
 
 protected:
   vtkIceFrame() = default;

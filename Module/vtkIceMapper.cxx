@@ -8,6 +8,7 @@
 #include "vtkIceInterior.h"
 #include "vtkIceInteriorLook.h"
 #include "vtkIceOptics.h"
+#include "vtkIcePrefilteredEnvironment.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceSinglePassInterior.h"
 #include "vtkIceStaticEnvironment.h"
@@ -42,7 +43,8 @@ enum ShaderParts
   BumpPart = 4,
   NormalMapPart = 8,
   GlisteningPart = 16,
-  InteriorPart = 32
+  InteriorPart = 32,
+  RoughPart = 64
 };
 
 // Clamps `value` to [low, high] into `member` as vtkSetClampMacro does, but refuses NaN (which
@@ -79,6 +81,7 @@ vtkIceMapper::vtkIceMapper()
   , SinglePass(new vtkIceSinglePassInterior)
   , Interior(new vtkIceInterior)
   , Environment(new vtkIceStaticEnvironment)
+  , Prefiltered(new vtkIcePrefilteredEnvironment)
   , Culling(new vtkIceBackfaceCulling)
 {
   // Tinting by scalars is asked for, not inherited: filters hand their scalars on (an iso-surface
@@ -159,6 +162,7 @@ vtkIceClampedSetter(BackNormalWeight)
 vtkIceClampedSetter(CrackIntensity)
 vtkIceClampedSetter(Milkiness)
 vtkIceClampedSetter(MilkyCoreRadius)
+vtkIceClampedSetter(Roughness)
 vtkIceClampedSetter(BumpStrength)
 vtkIceClampedSetter(BumpScale)
 vtkIceClampedSetter(GlisteningScale)
@@ -303,6 +307,10 @@ int vtkIceMapper::ShaderVariant() const
   {
     variant |= InteriorPart;
   }
+  if (this->Roughness > 0.0)
+  {
+    variant |= RoughPart;
+  }
   return variant;
 }
 
@@ -329,9 +337,18 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->HelpersSawPass = false;
   }
   // A dynamic cube map is handed to the shader by the pass that rendered it.
-  this->ActiveEnvironmentObject = frame && frame->CubeMapOf(act)
+  vtkTextureObject* dynamicCubeMap = frame ? frame->CubeMapOf(act) : nullptr;
+  this->ActiveEnvironmentObject = dynamicCubeMap
     ? nullptr
     : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
+  if (this->Roughness > 0.0)
+  {
+    this->ActiveRoughEnvironment =
+      this->Prefiltered->Update(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()),
+        dynamicCubeMap ? dynamicCubeMap : this->ActiveEnvironmentObject,
+        dynamicCubeMap ? frame->CubeMapVersion : this->Environment->GetVersion());
+    this->ActiveRoughEnvironment->Activate();
+  }
   if (this->NormalMap && this->BumpStrength > 0.0)
   {
     this->NormalMap->Render(ren);
@@ -395,6 +412,11 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
   }
   this->Environment->Unbind(ren);
   this->ActiveEnvironmentObject = nullptr;
+  if (this->ActiveRoughEnvironment)
+  {
+    this->ActiveRoughEnvironment->Deactivate();
+    this->ActiveRoughEnvironment = nullptr;
+  }
   if (this->SinglePassPrepared)
   {
     this->SinglePass->Finish(ren);
@@ -420,6 +442,10 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
 
   parts.VertexDeclarations += optics + Get(vtkIceSurfaceVS, "Dec");
   parts.VertexImpl += Get(vtkIceSurfaceVS, "Impl");
+  if (variant & RoughPart)
+  {
+    parts.FragmentDeclarations += "#define ICE_ROUGH_ENVIRONMENT\n";
+  }
   parts.FragmentDeclarations += optics + Get(vtkIceSurfaceFS, "Dec");
   parts.FragmentImpl += Get(vtkIceSurfaceFS, "Impl");
   if (this->DrawsScalarColors())
@@ -489,6 +515,13 @@ void vtkIceMapper::SetIceShaderParameters(
   if (this->ActiveEnvironmentObject)
   {
     program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());
+  }
+  if (this->ActiveRoughEnvironment)
+  {
+    program->SetUniformi(
+      "iceEnvironmentPrefiltered", this->ActiveRoughEnvironment->GetTextureUnit());
+    program->SetUniformf("iceRoughnessLevel",
+      static_cast<float>(vtkIcePrefilteredEnvironment::LevelOf(this->Roughness)));
   }
   // The parameters of the parts vtkIcePass adds (two-sided refraction, depth debug views).
   if (program->IsUniformUsed("iceBackNormalWeight"))
@@ -704,6 +737,7 @@ void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
 void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Environment->ReleaseGraphicsResources(win);
+  this->Prefiltered->ReleaseGraphicsResources(win);
   this->Interior->ReleaseGraphicsResources(win);
   this->SinglePass->ReleaseGraphicsResources(win);
   if (this->GlisteningNoise)
@@ -722,6 +756,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AttenuationColor: (" << this->AttenuationColor[0] << ", "
      << this->AttenuationColor[1] << ", " << this->AttenuationColor[2] << ")\n";
   os << indent << "AttenuationDistance: " << this->AttenuationDistance << "\n";
+  os << indent << "Roughness: " << this->Roughness << "\n";
   os << indent << "FresnelPower: " << this->FresnelPower << "\n";
   os << indent << "BackNormalWeight: " << this->BackNormalWeight << "\n";
   os << indent << "PlacementBounds: " << this->PlacementBounds[0];

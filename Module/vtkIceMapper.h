@@ -41,6 +41,7 @@
 class vtkActor;
 class vtkIceInterior;
 class vtkIceSinglePassInterior;
+class vtkIcePrefilteredEnvironment;
 class vtkIceStaticEnvironment;
 class vtkIceBackfaceCulling;
 class vtkIceGlisteningTexture;
@@ -327,6 +328,19 @@ public:
 
   ///@{
   /**
+   * Frost: how rough the surface is, in [0, 1] (glTF's roughness: GGX with alpha = roughness^2).
+   * Reflection and refraction both show the environment averaged over the rough surface's lobe
+   * (the environment prefiltered once per change of it, static or dynamic), as cold ice covered
+   * in small crystals does. 0 (the default): a mirror-smooth surface, the paper's look.
+   */
+  virtual void SetRoughness(double roughness);
+  virtual double GetRoughnessMinValue() { return 0.0; }
+  virtual double GetRoughnessMaxValue() { return 1.0; }
+  vtkGetMacro(Roughness, double);
+  ///@}
+
+  ///@{
+  /**
    * A bumpy surface: how far the normal tilts (0 = smooth, the paper's clean optics) and the size
    * of a bump as a fraction of the ice's largest extent. The bumps are fixed to the model, so they
    * do not swim when the camera moves, and they drive reflection, refraction and Fresnel.
@@ -527,6 +541,7 @@ protected:
   int AirSeed = 1;
   double Milkiness = 0.5;
   double MilkyCoreRadius = 0.0;
+  double Roughness = 0.0;
   double BumpStrength = 0.08;
   double BumpScale = 0.15;
   vtkSmartPointer<vtkTexture> NormalMap;
@@ -545,6 +560,9 @@ protected:
   // The renderer's environment or the built-in sky, when no pass hands a dynamic cube map.
   std::unique_ptr<vtkIceStaticEnvironment> Environment;
   vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples, if bound here
+  // What it samples where the surface is rough (Roughness), bound during a draw.
+  std::unique_ptr<vtkIcePrefilteredEnvironment> Prefiltered;
+  vtkTextureObject* ActiveRoughEnvironment = nullptr;
 
   // The bounds the look is placed in (PlacementBounds, else the prepared input's), and their
   // largest extent.

@@ -247,6 +247,8 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
     this->StartStep(CubeMapStep);
     this->CubeMapPass->Render(iceState);
     this->StopStep(CubeMapStep);
+    this->Frame->CubeMapVersion =
+      static_cast<vtkMTimeType>(this->CubeMapPass->GetNumberOfFaceRenders());
   }
   if (needs & vtkIceFrame::NeedsDepthIntervalBeforeScene)
   {

@@ -171,6 +171,18 @@ vtkTextureObject* vtkIceStaticEnvironment::Bind(vtkRenderer* renderer, vtkObject
 {
   this->Bound = this->Select(renderer, owner);
   this->Bound->Render(renderer);
+  // The texture, its face images, or the panorama it was converted from.
+  this->Version = std::max(this->Bound->GetMTime(), this->PanoramaTime);
+  for (int port = 0; port < this->Bound->GetNumberOfInputPorts(); ++port)
+  {
+    vtkDataObject* face = this->Bound->GetNumberOfInputConnections(port)
+      ? this->Bound->GetInputDataObject(port, 0)
+      : nullptr;
+    if (face)
+    {
+      this->Version = std::max(this->Version, face->GetMTime());
+    }
+  }
   return static_cast<vtkOpenGLTexture*>(this->Bound)->GetTextureObject();
 }
 

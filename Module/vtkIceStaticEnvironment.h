@@ -34,6 +34,8 @@ public:
     FromLinear = 1
   };
   int GetColorSpace() const { return this->ColorSpace; }
+  // Changes when the bound texture's texels may have changed (for a copy made of them).
+  vtkMTimeType GetVersion() const { return this->Version; }
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -46,6 +48,7 @@ private:
   vtkMTimeType PanoramaTime = 0;
   float LookupMatrix[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   int ColorSpace = AsSampled;
+  vtkMTimeType Version = 0;
   vtkTexture* Bound = nullptr;
   bool Warned = false;
 };

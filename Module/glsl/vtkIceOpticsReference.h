@@ -221,6 +221,49 @@ inline bool EllipsoidDoubleRefraction(const Vec3& origin, const Vec3& e, const V
   exitDirection = Refract(t, -exitNormal, 1.0 / eta);
   return true;
 }
+// GGX's distribution of micro-normals at cos(theta_h) = nDotH, alpha2 = roughness^4
+// (iceGgxDistribution in vtkIcePrefilterFS.glsl).
+inline double GgxDistribution(double nDotH, double alpha2)
+{
+  const double d = nDotH * nDotH * (alpha2 - 1.0) + 1.0;
+  return alpha2 / (3.14159265358979323846 * d * d);
+}
+
+// One texel of an environment cube map: its world direction, solid angle and colour.
+struct EnvironmentTexel
+{
+  Vec3 Direction;
+  double SolidAngle;
+  Vec3 Colour;
+};
+
+// The environment through a surface of `roughness` around the unit direction n, the view taken
+// along n (what vtkIcePrefilterFS.glsl estimates with few samples): the integral over every
+// texel l of colour(l) D(h) (n . l), h halfway between n and l, divided by the same integral of 1.
+// The truth the prefiltered environment is measured against.
+template <typename Texels>
+Vec3 PrefilteredEnvironment(const Vec3& n, double roughness, const Texels& texels)
+{
+  if (roughness <= 0.0)
+  {
+    roughness = 1.0e-3;
+  }
+  const double alpha2 = std::pow(roughness, 4.0);
+  Vec3 sum(0.0);
+  double weight = 0.0;
+  for (const EnvironmentTexel& texel : texels)
+  {
+    const double nDotL = glm::dot(n, texel.Direction);
+    if (nDotL > 0.0)
+    {
+      const double w = GgxDistribution(glm::dot(n, glm::normalize(n + texel.Direction)), alpha2) *
+        nDotL * texel.SolidAngle;
+      sum += w * texel.Colour;
+      weight += w;
+    }
+  }
+  return weight > 0.0 ? sum / weight : Vec3(0.0);
+}
 }
 
 #endif

@@ -11,6 +11,23 @@ vec3 iceEnvironmentColor(vec3 directionWC)
   vec3 color = texture(iceEnvironment, iceEnvironmentMatrix * directionWC).rgb;
   return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
 }
+// The environment seen through the surface and mirrored by it: with Roughness, its prefiltered
+// copy (vtkIcePrefilteredEnvironment) at the level of the surface's roughness.
+#ifdef ICE_ROUGH_ENVIRONMENT
+uniform samplerCube iceEnvironmentPrefiltered;
+uniform float iceRoughnessLevel;
+vec3 iceSurfaceEnvironmentColor(vec3 directionWC)
+{
+  vec3 color = textureLod(
+    iceEnvironmentPrefiltered, iceEnvironmentMatrix * directionWC, iceRoughnessLevel).rgb;
+  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+}
+#else
+vec3 iceSurfaceEnvironmentColor(vec3 directionWC)
+{
+  return iceEnvironmentColor(directionWC);
+}
+#endif
 uniform float iceRefractionRatio;
 uniform vec3 iceTint;
 uniform vec3 iceAttenuationColor;
@@ -30,9 +47,9 @@ uniform float iceInverseAttenuationDistance;
     // The refracted light's path in the ice, where vtkIcePass knows the back faces (0: none).
     float icePathLength = 0.0;
     //ICEHOOK::PathLength
-    vec3 refracted = iceEnvironmentColor(refractedDirection) *
+    vec3 refracted = iceSurfaceEnvironmentColor(refractedDirection) *
       iceTransmittance(icePathLength, iceAttenuationColor, iceInverseAttenuationDistance);
-    vec3 reflected = iceEnvironmentColor(iceReflect(e, nFront));
+    vec3 reflected = iceSurfaceEnvironmentColor(iceReflect(e, nFront));
     vec3 iceColor = iceTint;
     //ICEHOOK::ScalarColor
     gl_FragData[0].rgb = iceColor * mix(refracted, reflected, clamp(fresnel, 0.0, 1.0));
