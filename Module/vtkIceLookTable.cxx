@@ -164,6 +164,9 @@ std::vector<Entry> MakeEntries()
     MilkyCoreRadius);
   ICE_MAPPER_NUMBER("bumps", "strength of the surface bumps (0: smooth)", BumpStrength);
   ICE_MAPPER_NUMBER("bump-scale", "size of the bumps, a fraction of the model", BumpScale);
+  ICE_MAPPER_NUMBER("roughness",
+    "frost: how rough the surface is, 0 smooth to 1 matte (blurs reflection and refraction)",
+    Roughness);
   ICE_MAPPER_SWITCH("glistening", "direct light, rim light and crack glints", Glistening);
   ICE_MAPPER_NUMBER(
     "snow", "snow over the whole surface, 0 ice to 1 snow (with glistening)", SnowAmount);

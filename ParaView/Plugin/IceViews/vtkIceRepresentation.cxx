@@ -171,6 +171,7 @@ vtkIceForwardMacro(NumberOfAirPlanes, int, v);
 vtkIceForwardMacro(AirSeed, int, v);
 vtkIceForwardMacro(Milkiness, double, v);
 vtkIceForwardMacro(MilkyCoreRadius, double, v);
+vtkIceForwardMacro(Roughness, double, v);
 vtkIceForwardMacro(BumpStrength, double, v);
 vtkIceForwardMacro(BumpScale, double, v);
 vtkIceForwardMacro(Glistening, int, v != 0);

@@ -71,6 +71,7 @@ public:
   void SetAirSeed(int value);
   void SetMilkiness(double value);
   void SetMilkyCoreRadius(double value);
+  void SetRoughness(double value);
   void SetBumpStrength(double value);
   void SetBumpScale(double value);
   void SetGlistening(int value);
