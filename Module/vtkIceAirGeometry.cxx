@@ -14,6 +14,7 @@
 #include "vtkTransform.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 vtkStandardNewMacro(vtkIceAirGeometry);
@@ -26,6 +27,24 @@ void vtkIceAirGeometry::Placement(
   const std::uint32_t sequence = static_cast<std::uint32_t>(seed) * 6151U + 7U;
   double center[3];
   vtkIceNoise::RandomPlacement(sequence, index, bounds, 0.4, 0.2, 0.4, placement, center);
+  double tile[2];
+  Tile(index, tile);
+  if (tile[0] == 0.0 && tile[1] == 0.5)
+  {
+    // The tile of tube-shaped bubbles, long along its v axis (vtkIceAirTextureSource): turned
+    // in its plane so that they all run along world +Y (VTK's default up), as bubbles trapped
+    // by ice freezing from the top do. A plane facing +Y keeps its turn.
+    double across[3] = { 1.0, 0.0, 0.0 };
+    double along[3] = { 0.0, 1.0, 0.0 };
+    placement->TransformVector(across, across);
+    placement->TransformVector(along, along);
+    const double a = across[1] / vtkMath::Dot(across, across);
+    const double b = along[1] / vtkMath::Dot(along, along);
+    if (a * a + b * b > 1.0e-6)
+    {
+      placement->RotateZ(vtkMath::DegreesFromRadians(std::atan2(-a, b)));
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
