@@ -12,6 +12,12 @@ namespace vtkIceInteriorLook
 {
 // The cracks' highlight: VTK's specular term of this power (specular 1, white).
 constexpr double CrackSpecularPower = 40.0;
+// The cracks as sheets (the single pass, vtkIceMapper::CrackReflection): how much of the bumps'
+// tilt the mirror keeps, the share of a crack's radius along its outline that scatters white, and
+// how white per unit of CrackReflection.
+constexpr double CrackMirrorBumps = 0.3;
+constexpr double CrackEdgeWidth = 0.06;
+constexpr double CrackEdge = 1.25;
 // How far the crack sheets' normals tilt with the noise fixed to them.
 constexpr double CrackBumpStrength = 0.6;
 // Noise cells across the ice's extent on the crack sheets (their bump frequency times the extent).
@@ -65,6 +71,9 @@ inline std::string Defines()
           << "#define ICE_CORE_COLOUR vec3(" << CoreColour[0] << ", " << CoreColour[1] << ", "
           << CoreColour[2] << ")\n"
           << "#define ICE_CORE_RIM_AIR " << CoreRimAir << "\n"
+          << "#define ICE_CRACK_MIRROR_BUMPS " << CrackMirrorBumps << "\n"
+          << "#define ICE_CRACK_EDGE_WIDTH " << CrackEdgeWidth << "\n"
+          << "#define ICE_CRACK_EDGE " << CrackEdge << "\n"
           << "#define ICE_DEBUG_CRACKS " << static_cast<int>(DebugCracks) << "\n"
           << "#define ICE_DEBUG_AIR " << static_cast<int>(DebugAir) << "\n";
   return defines.str();

@@ -147,6 +147,8 @@ std::vector<Entry> MakeEntries()
     [](const Target& t) { return static_cast<double>(t.Mapper->GetCrackSeed()); },
     [](const Target& t, double v) { t.Mapper->SetCrackSeed(static_cast<int>(v)); }, Kind::Integer);
   ICE_MAPPER_NUMBER("crack-intensity", "brightness of the cracks' highlights", CrackIntensity);
+  ICE_MAPPER_NUMBER("crack-reflection",
+    "cracks as sheets mirroring the environment, 0 highlights only (single-pass)", CrackReflection);
   ICE_MAPPER_CHOICE(
     "interior", "how cracks and air are rendered", InteriorMethod, "paper-passes", "single-pass");
   ICE_MAPPER_CHOICE("crack-clipping", "how cracks are kept inside the ice (paper-passes)",

@@ -160,6 +160,7 @@ double vtkIceMapper::InputExtent()
 vtkIceClampedSetter(FresnelPower)
 vtkIceClampedSetter(BackNormalWeight)
 vtkIceClampedSetter(CrackIntensity)
+vtkIceClampedSetter(CrackReflection)
 vtkIceClampedSetter(Milkiness)
 vtkIceClampedSetter(MilkyCoreRadius)
 vtkIceClampedSetter(Roughness)
@@ -576,6 +577,7 @@ void vtkIceMapper::SetIceShaderParameters(
       settings.Cracks = this->InputFlat ? 0 : this->NumberOfCracks;
       settings.CrackSeed = this->CrackSeed;
       settings.CrackIntensity = this->CrackIntensity;
+      settings.CrackReflection = this->CrackReflection;
       settings.CrackBumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
       this->GetLookBounds(settings.Bounds);
       settings.AirPlanes = this->NumberOfAirPlanes;
@@ -777,6 +779,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCracks: " << this->NumberOfCracks << "\n";
   os << indent << "CrackSeed: " << this->CrackSeed << "\n";
   os << indent << "CrackIntensity: " << this->CrackIntensity << "\n";
+  os << indent << "CrackReflection: " << this->CrackReflection << "\n";
   os << indent
      << "CrackClipping: " << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval")
      << "\n";

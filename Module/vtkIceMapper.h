@@ -256,6 +256,19 @@ public:
   vtkGetMacro(CrackIntensity, double);
   ///@}
 
+  ///@{
+  /**
+   * Cracks as sheets: how much of the reflectance of a thin gap of air in the ice (Fresnel's,
+   * all of it at glancing angles: total internal reflection) a crack mirrors of the environment,
+   * its outline whitening with it. 0: the highlights alone, the paper's look. Default 0.4.
+   * Clamped to [0, 1]. Drawn by the single-pass interior (InteriorSinglePass) with vtkIcePass.
+   */
+  virtual void SetCrackReflection(double reflection);
+  virtual double GetCrackReflectionMinValue() { return 0.0; }
+  virtual double GetCrackReflectionMaxValue() { return 1.0; }
+  vtkGetMacro(CrackReflection, double);
+  ///@}
+
   enum CrackClippingModes
   {
     DepthInterval = 0, // per fragment, against the ice's [front, back] depth (the paper)
@@ -533,6 +546,7 @@ protected:
   int NumberOfCracks = 2;
   int CrackSeed = 1;
   double CrackIntensity = 1.0;
+  double CrackReflection = 0.4;
   int CrackClipping = DepthInterval;
   bool CracksPerturbRefraction = false;
   int DebugView = DebugOff;

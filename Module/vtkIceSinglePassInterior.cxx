@@ -322,6 +322,7 @@ void vtkIceSinglePassInterior::SetUniforms(vtkShaderProgram* program)
   program->SetUniformi("iceCrackCount", this->Current.Cracks);
   program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->Current.AirPlanes : 0);
   program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Current.CrackIntensity));
+  program->SetUniformf("iceCrackReflection", static_cast<float>(this->Current.CrackReflection));
   program->SetUniformf(
     "iceCrackBumpStrength", static_cast<float>(vtkIceInteriorLook::CrackBumpStrength));
   program->SetUniformf(

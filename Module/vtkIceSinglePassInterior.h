@@ -27,6 +27,7 @@ public:
     int Cracks = 0;
     int CrackSeed = 1;
     double CrackIntensity = 1.0;
+    double CrackReflection = 0.0;    // the cracks as sheets (vtkIceMapper::CrackReflection)
     double CrackBumpFrequency = 1.0; // noise cells per model unit
     int AirPlanes = 0;
     int AirSeed = 1;

@@ -10,6 +10,7 @@ uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
 uniform int iceCrackCount;          // records 0 .. iceCrackCount - 1
 uniform int iceAirCount;            // the next records, back to front for this camera
 uniform float iceCrackIntensity;
+uniform float iceCrackReflection; // the cracks as sheets: 0 none
 uniform float iceCrackBumpStrength;
 uniform float iceCrackBumpFrequency; // noise cells per model unit
 uniform float iceMilkiness;          // 0: sparse clear bubbles, 1: white and cloudy
@@ -62,6 +63,19 @@ float iceCrackOutline(int model, float angle)
 }
 
 //ICE::Functions
+// The nearest crack seen along the eye ray e (the single pass only: the paper passes' crack
+// program has no environment), at its normal n, as a sheet: it mirrors the environment
+// (`mirrored`: what lies along e reflected about n) by `share` of its reflectance, all of it at
+// glancing angles (iceCrackReflectance), and its rim (`edge`, 1 at the outline) scatters white
+// light, so its outline shows even where it mirrors little.
+vec3 iceCrackSheet(vec3 behind, vec3 e, vec3 n, float edge, float ior, float share,
+  vec3 mirrored)
+{
+  vec3 colour = mix(behind, mirrored, clamp(share * iceCrackReflectance(dot(e, n), ior), 0.0, 1.0));
+  float rim = smoothstep(1.0 - ICE_CRACK_EDGE_WIDTH, 1.0, edge);
+  return mix(colour, ICE_CORE_COLOUR, clamp(share * ICE_CRACK_EDGE * rim, 0.0, 1.0));
+}
+
 // Highlights of VTK's lights on a crack at `positionWC` with normal n (facing the viewer).
 vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
 {
@@ -119,6 +133,11 @@ void iceInterior(inout vec3 colour, float backDepth)
   // at 1/5 of the screen); llvmpipe runs it masked, as before (no slower).
   vec3 highlights = vec3(0.0);
   bool crackSeen = false;
+  // The nearest crack crossed: a sheet that mirrors the environment (iceCrackReflection) about its
+  // normal, with part of the bumps' tilt (all of it would scatter the image into speckle).
+  float nearest = sBack;
+  vec3 nearestNormal = vec3(0.0);
+  float nearestEdge = 0.0;
   for (int k = 0; k < iceCrackCount; ++k)
   {
     // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
@@ -144,7 +163,8 @@ void iceInterior(inout vec3 colour, float backDepth)
       continue;
     }
     vec3 hit = p + s * v;
-    if (length(hit.xy) > iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x)))
+    float outline = iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x));
+    if (length(hit.xy) > outline)
     {
       continue;
     }
@@ -155,11 +175,23 @@ void iceInterior(inout vec3 colour, float backDepth)
     vec3 g = vec3(-2.0 * a * hit.x, -2.0 * b * hit.y, 1.0);
     vec3 n = normalize(
       iceNormalMCWCMatrix * (g.x * ray.row0.xyz + g.y * ray.row1.xyz + g.z * ray.row2.xyz));
+    vec3 sheetNormal = dot(n, e) > 0.0 ? -n : n;
     vec3 gradient = iceNormalMCWCMatrix *
       textureLod(iceInteriorBump, (o + s * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;
     n = normalize(n - iceCrackBumpStrength * (gradient - dot(gradient, n) * n));
     n = dot(n, e) > 0.0 ? -n : n;
     highlights += iceCrackLight(n, -e, icePositionWCVSOutput + s * e);
+    if (s < nearest)
+    {
+      nearest = s;
+      nearestNormal = normalize(mix(sheetNormal, n, ICE_CRACK_MIRROR_BUMPS));
+      nearestEdge = length(hit.xy) / max(outline, 1.0e-6);
+    }
+  }
+  if (crackSeen && iceInteriorDebug == 0 && iceCrackReflection > 0.0)
+  {
+    colour = iceCrackSheet(colour, e, nearestNormal, nearestEdge, 1.0 / iceRefractionRatio,
+      iceCrackIntensity * iceCrackReflection, iceSurfaceEnvironmentColor(reflect(e, nearestNormal)));
   }
   colour = iceInteriorDebug == ICE_DEBUG_CRACKS && crackSeen ? vec3(1.0, 0.0, 0.0)
                                               : colour + iceCrackIntensity * highlights;

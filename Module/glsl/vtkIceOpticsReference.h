@@ -45,6 +45,23 @@ inline double Fresnel(const Vec3& e, const Vec3& n, double power)
   return std::pow(std::min(1.0, std::max(1.0e-6, 1.0 - std::abs(glm::dot(e, n)))), power);
 }
 
+// A crack's reflectance (iceCrackReflectance): Fresnel's at the ice-to-air face (1 beyond the
+// critical angle), the thin gap's two faces together 2R / (1 + R).
+inline double CrackReflectance(double cosIncidence, double ior)
+{
+  const double cosI = std::min(1.0, std::abs(cosIncidence));
+  const double sinT2 = ior * ior * (1.0 - cosI * cosI);
+  if (sinT2 >= 1.0)
+  {
+    return 1.0;
+  }
+  const double cosT = std::sqrt(1.0 - sinT2);
+  const double rs = (ior * cosI - cosT) / (ior * cosI + cosT);
+  const double rp = (ior * cosT - cosI) / (ior * cosT + cosI);
+  const double r = 0.5 * (rs * rs + rp * rp);
+  return 2.0 * r / (1.0 + r);
+}
+
 // Beer-Lambert absorption (iceTransmittance): white light that has travelled the attenuation
 // distance has the attenuation colour; inverseDistance 0 absorbs nothing.
 inline Vec3 Transmittance(double pathLength, const Vec3& attenuationColor, double inverseDistance)

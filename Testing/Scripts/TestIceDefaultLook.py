@@ -1,37 +1,25 @@
 """ice-render's default look reads as ice, measured: thick ice is bluer than thin ice, at most 1 %
-of the ice's pixels are clipped to white, the centre of the block is milkier than its rim.
+of the ice's pixels are clipped to white, the centre of the block is milkier than its rim, the
+cracks show as sheets (over their area and along their outline, not only as highlights).
 
 usage: TestIceDefaultLook.py ICE_RENDER WORK_DIR   (Debian's /usr/bin/python3, for vtk)
 """
 import os
-import subprocess
 import sys
 
-import vtk
+from ice_render_tool import Checks, render as render_tool
 
 ICE_RENDER, WORK = sys.argv[1], sys.argv[2]
 SIZE = "480x360"
-failures = 0
-
-
-def check(name, ok, detail=""):
-    global failures
-    print(("ok   " if ok else "FAIL ") + name + (": " + detail if detail else ""))
-    failures += 0 if ok else 1
+check = Checks()
 
 
 def render(name, *args):
     """Renders to NAME.png; returns its pixels (a list of RGB tuples)."""
-    path = os.path.join(WORK, name + ".png")
-    result = subprocess.run([ICE_RENDER, "--size", SIZE, *args, "--out", path],
-                            capture_output=True, text=True, timeout=300)
-    if result.returncode != 0:
-        sys.exit("ice-render %s: %s" % (" ".join(args), result.stderr.strip()))
-    reader = vtk.vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    scalars = reader.GetOutput().GetPointData().GetScalars()
-    return [scalars.GetTuple(i)[:3] for i in range(scalars.GetNumberOfTuples())]
+    pixels, error = render_tool(ICE_RENDER, WORK, name, "--size", SIZE, *args)
+    if error is not None:
+        sys.exit("ice-render %s: %s" % (" ".join(args), error))
+    return pixels
 
 
 def ice_pixels(model, look):
@@ -43,6 +31,26 @@ def ice_pixels(model, look):
 def mean(values):
     values = list(values)
     return sum(values) / max(len(values), 1)
+
+
+def check_crack_sheets(look, width):
+    """Where the block's cracks are (the debug view's red), the cracks change most pixels of their
+    area and of their outline against the same look without cracks."""
+    debug = render("block-cracks", "--model", "block", "--debug-view", "cracks-clipped")
+    no_cracks = render("block-no-cracks", "--model", "block", "--cracks", "0")
+    crack = set(i for i, p in enumerate(debug) if p[0] >= 200 and p[1] <= 60 and p[2] <= 60)
+    outline = [i for i in crack
+               if any(j not in crack for j in (i - 1, i + 1, i - width, i + width))]
+
+    def changed(pixels):
+        return sum(1 for i in pixels
+                   if max(abs(a - b) for a, b in zip(look[i], no_cracks[i])) > 10) / max(
+                       len(pixels), 1)
+
+    area, edge = changed(crack), changed(outline)
+    check("the cracks show as sheets", len(crack) > 2000 and area >= 0.5 and edge >= 0.5,
+          "%d crack pixels, %.0f %% of them and %.0f %% of the %d on their outline changed by "
+          "more than 10/255" % (len(crack), 100 * area, 100 * edge, len(outline)))
 
 
 def main():
@@ -79,11 +87,12 @@ def main():
             centre, rim = mean(whiter["centre"]), mean(whiter["rim"])
             check("the block's centre is milkier than its rim", centre >= 20 and centre >= 3 * rim,
                   "the core whitens the centre by %.1f/255, the rim by %.1f/255" % (centre, rim))
+            check_crack_sheets(look, width)
     check("thick ice (the block) bluer than thin ice (the teapot's walls)",
           blue_shift["block"] >= 15 and blue_shift["block"] >= 1.5 * blue_shift["teapot"],
           "blue over red from absorption: block %.1f/255, teapot %.1f/255"
           % (blue_shift["block"], blue_shift["teapot"]))
-    return 1 if failures else 0
+    return 1 if check.failures else 0
 
 
 if __name__ == "__main__":

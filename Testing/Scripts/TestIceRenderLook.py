@@ -10,37 +10,25 @@ import shutil
 import subprocess
 import sys
 
-import vtk
+from ice_render_tool import Checks, read_png, render as render_tool, run as run_tool
 
 ICE_RENDER, WORK = sys.argv[1], sys.argv[2]
 SIZE = "96x72"
 # The library's defaults (the paper preset): each option changes that look.
 BASE = ["--model", "sphere", "--static", "--size", SIZE, "--preset", "paper"]
-failures = 0
-
-
-def check(name, ok, detail=""):
-    global failures
-    print(("ok   " if ok else "FAIL ") + name + (": " + detail if detail else ""))
-    failures += 0 if ok else 1
+check = Checks()
 
 
 def run(*args):
-    return subprocess.run([ICE_RENDER, *args], capture_output=True, text=True, timeout=300)
+    return run_tool(ICE_RENDER, *args)
 
 
 def render(name, *args):
     """Renders to NAME.png; returns its pixels (a list of RGB tuples) or None."""
-    path = os.path.join(WORK, name + ".png")
-    result = run(*args, "--out", path)
-    if result.returncode != 0:
-        print("     ice-render %s: %s" % (" ".join(args), result.stderr.strip()))
-        return None
-    reader = vtk.vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    scalars = reader.GetOutput().GetPointData().GetScalars()
-    return [scalars.GetTuple(i)[:3] for i in range(scalars.GetNumberOfTuples())]
+    pixels, error = render_tool(ICE_RENDER, WORK, name, *args)
+    if error is not None:
+        print("     ice-render %s: %s" % (" ".join(args), error))
+    return pixels
 
 
 def differing(a, b, threshold=2):
@@ -200,13 +188,7 @@ def turntable():
     check("--turntable 3 writes turn-0001.png .. turn-0003.png and no more",
           result.returncode == 0 and present == [True, True, True, False],
           result.stdout.strip() + result.stderr.strip())
-    pictures = []
-    for f in frames[:2]:
-        reader = vtk.vtkPNGReader()
-        reader.SetFileName(f)
-        reader.Update()
-        s = reader.GetOutput().GetPointData().GetScalars()
-        pictures.append([s.GetTuple(i)[:3] for i in range(s.GetNumberOfTuples())])
+    pictures = [read_png(f) for f in frames[:2]]
     check("the turntable's frames differ", len(differing(*pictures)) > 100)
     video = os.path.join(WORK, "turn.mp4")
     if shutil.which("ffmpeg"):
@@ -227,8 +209,8 @@ def main():
     bad_values_are_refused()
     presets_round_trip()
     turntable()
-    print("%d failed" % failures)
-    return 1 if failures else 0
+    print("%d failed" % check.failures)
+    return 1 if check.failures else 0
 
 
 if __name__ == "__main__":

@@ -172,6 +172,7 @@ vtkIceForwardMacro(AirSeed, int, v);
 vtkIceForwardMacro(Milkiness, double, v);
 vtkIceForwardMacro(MilkyCoreRadius, double, v);
 vtkIceForwardMacro(Roughness, double, v);
+vtkIceForwardMacro(CrackReflection, double, v);
 vtkIceForwardMacro(BumpStrength, double, v);
 vtkIceForwardMacro(BumpScale, double, v);
 vtkIceForwardMacro(Glistening, int, v != 0);

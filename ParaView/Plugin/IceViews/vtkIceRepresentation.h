@@ -72,6 +72,7 @@ public:
   void SetMilkiness(double value);
   void SetMilkyCoreRadius(double value);
   void SetRoughness(double value);
+  void SetCrackReflection(double value);
   void SetBumpStrength(double value);
   void SetBumpScale(double value);
   void SetGlistening(int value);
