@@ -7,8 +7,13 @@
   {
     // A crack inside the ice acts as a back face: its normal, turned away from the viewer, at its
     // own depth (the overlay shader moves cracks to the ice's front depth).
+    // Seen nearly edge-on (its normal within about 14 degrees of square to the view) it is left out: a normal
+    // across the view would swing the refraction far aside (a dark jagged line along the crack),
+    // while the sheet itself covers almost nothing there.
     vec3 crackNormal = normalize(iceNormalWCVSOutput);
-    if (dot(crackNormal, iceViewDirectionWC) < 0.0) { crackNormal = -crackNormal; }
+    float facing = dot(crackNormal, iceViewDirectionWC);
+    if (abs(facing) < 0.25) { discard; }
+    if (facing < 0.0) { crackNormal = -crackNormal; }
     gl_FragData[0] = vec4(crackNormal, max(iceViewDepth(), 1.0e-6));
     gl_FragDepth = gl_FragCoord.z;
   }
