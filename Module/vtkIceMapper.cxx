@@ -349,6 +349,7 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
         dynamicCubeMap ? dynamicCubeMap : this->ActiveEnvironmentObject,
         dynamicCubeMap ? frame->CubeMapVersion : this->Environment->GetVersion());
     this->ActiveRoughEnvironment->Activate();
+    this->Prefiltered->BeginSampling();
   }
   if (this->NormalMap && this->BumpStrength > 0.0)
   {
@@ -416,6 +417,7 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
   if (this->ActiveRoughEnvironment)
   {
     this->ActiveRoughEnvironment->Deactivate();
+    this->Prefiltered->EndSampling();
     this->ActiveRoughEnvironment = nullptr;
   }
   if (this->SinglePassPrepared)

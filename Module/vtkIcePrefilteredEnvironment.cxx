@@ -55,6 +55,21 @@ vtkSmartPointer<vtkTextureObject> MakeCubeMap(
 }
 
 //------------------------------------------------------------------------------
+void vtkIcePrefilteredEnvironment::BeginSampling()
+{
+  this->SeamlessWasOn = glIsEnabled(GL_TEXTURE_CUBE_MAP_SEAMLESS) == GL_TRUE;
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+}
+
+void vtkIcePrefilteredEnvironment::EndSampling()
+{
+  if (!this->SeamlessWasOn)
+  {
+    glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkIcePrefilteredEnvironment::vtkIcePrefilteredEnvironment() = default;
 vtkIcePrefilteredEnvironment::~vtkIcePrefilteredEnvironment() = default;
 
@@ -145,6 +160,8 @@ void vtkIcePrefilteredEnvironment::Filter(vtkOpenGLRenderWindow* window, vtkText
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_CULL_FACE);
+  // The rougher levels sample the resampled source across its faces' edges too.
+  this->BeginSampling();
   state->PushFramebufferBindings();
   this->FrameBuffer->Bind();
   this->FrameBuffer->ActivateDrawBuffer(0);
@@ -181,6 +198,7 @@ void vtkIcePrefilteredEnvironment::Filter(vtkOpenGLRenderWindow* window, vtkText
   }
   this->Work->Deactivate();
   state->PopFramebufferBindings();
+  this->EndSampling();
 }
 
 //------------------------------------------------------------------------------

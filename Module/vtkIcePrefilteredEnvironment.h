@@ -42,6 +42,12 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
+  // Around a draw that samples the result: cube maps filtered across their faces' edges
+  // (GL_TEXTURE_CUBE_MAP_SEAMLESS), as OpenGL had it before afterwards. The coarse levels'
+  // texels are large: filtered face by face, their seams would show.
+  void BeginSampling();
+  void EndSampling();
+
 private:
   vtkIcePrefilteredEnvironment(const vtkIcePrefilteredEnvironment&) = delete;
   void operator=(const vtkIcePrefilteredEnvironment&) = delete;
@@ -61,6 +67,7 @@ private:
   unsigned int SourceHandle = 0;
   vtkMTimeType SourceVersion = 0;
   int NumberOfUpdates = 0;
+  bool SeamlessWasOn = false;
 };
 
 #endif

@@ -86,7 +86,7 @@ float iceGgxDistribution(float nDotH, float alpha2)
         // With the view along n the density of l is D(h) / 4.
         float sampleAngle = 4.0 / (float(iceSampleCount) * iceGgxDistribution(cosTheta, alpha2));
         float level = max(0.0, 0.5 * log2(sampleAngle / texelAngle));
-        sum += textureLod(iceSource, l, 0.0).rgb * nDotL;
+        sum += textureLod(iceSource, l, level).rgb * nDotL;
         weight += nDotL;
       }
     }
