@@ -20,9 +20,8 @@ vtkStandardNewMacro(vtkIceAirTextureSource);
 
 namespace
 {
-// Bubbles of one tile: count, radius range (fractions of the tile; small ones far more often
-// than large, radius = min (max / min)^(u^3)), how much longer than wide along the tile's v axis,
-// and clustering.
+// Bubbles of one tile: count, radius range (fractions of the tile; small ones more often than
+// large), how much longer than wide along the tile's v axis, and clustering.
 struct TileStyle
 {
   int Count;
@@ -33,25 +32,24 @@ struct TileStyle
   bool Clustered;
 };
 const TileStyle Styles[4] = {
-  { 1200, 0.003, 0.010, 1.0, 1.3, false }, // fine, dense
-  { 320, 0.004, 0.030, 1.0, 1.3, false },  // mixed sizes, mostly small
-  { 140, 0.003, 0.009, 2.5, 6.0, false },  // tubes, long along v (vtkIceAirGeometry::Placement)
-  { 400, 0.003, 0.015, 1.0, 1.5, true },   // clusters
+  { 900, 0.004, 0.010, 1.0, 1.3, false }, // fine, dense
+  { 220, 0.010, 0.025, 1.0, 1.3, false }, // small
+  { 120, 0.005, 0.012, 2.0, 3.5, false }, // tubes, long along v (vtkIceAirGeometry::Placement)
+  { 400, 0.005, 0.020, 1.0, 1.5, true },  // clusters
 };
 
-// Coverage (alpha) of a bubble at normalised distance d from its centre (d = 1 at the rim): a
-// softly brighter rim over a filled body and a highlight on the upper left, so that a large
-// bubble reads as a sphere of air rather than a ring.
+// Coverage (alpha) of a bubble at normalised distance d from its centre (d = 1 at the rim):
+// a bright rim, a thin interior and a highlight on the upper left.
 double BubbleAlpha(double d, double dx, double dy)
 {
   if (d >= 1.0)
   {
     return 0.0;
   }
-  const double rim = std::exp(-std::pow((1.0 - d) / 0.25, 2.0));
+  const double rim = std::exp(-std::pow((1.0 - d) / 0.18, 2.0));
   const double highlight =
-    std::exp(-((dx + 0.35) * (dx + 0.35) + (dy - 0.35) * (dy - 0.35)) / 0.03);
-  return std::min(1.0, 0.3 + 0.45 * rim + 0.6 * highlight);
+    std::exp(-((dx + 0.35) * (dx + 0.35) + (dy - 0.35) * (dy - 0.35)) / 0.02);
+  return std::min(1.0, 0.15 + 0.75 * rim + 0.8 * highlight);
 }
 }
 
@@ -118,9 +116,8 @@ int vtkIceAirTextureSource::RequestData(
         std::max(0.06, (style.Clustered ? clusterX : 0.5) + spread * (2.0 * uniform() - 1.0)));
       const double cy = std::min(0.94,
         std::max(0.06, (style.Clustered ? clusterY : 0.5) + spread * (2.0 * uniform() - 1.0)));
-      const double sizeDraw = uniform();
-      const double r = style.MinRadius *
-        std::pow(style.MaxRadius / style.MinRadius, sizeDraw * sizeDraw * sizeDraw);
+      const double r =
+        style.MinRadius + (style.MaxRadius - style.MinRadius) * uniform() * uniform();
       const double length =
         r * (style.MinStretch + (style.MaxStretch - style.MinStretch) * uniform());
       const int radiusPixels = static_cast<int>(std::ceil(r * tile)) + 1;
