@@ -171,7 +171,11 @@ vtkIceForwardMacro(NumberOfAirPlanes, int, v);
 vtkIceForwardMacro(AirSeed, int, v);
 vtkIceForwardMacro(Milkiness, double, v);
 vtkIceForwardMacro(MilkyCoreRadius, double, v);
-vtkIceForwardMacro(Roughness, double, v);
+// "Roughness" is ParaView's physically based lighting's (vtkGeometryRepresentation::SetRoughness).
+void vtkIceRepresentation::SetIceRoughness(double v)
+{
+  this->ForEachIceMapper([v](vtkIceMapper* m) { m->SetRoughness(v); });
+}
 vtkIceForwardMacro(CrackReflection, double, v);
 vtkIceForwardMacro(BumpStrength, double, v);
 vtkIceForwardMacro(BumpScale, double, v);

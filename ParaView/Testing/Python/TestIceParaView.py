@@ -187,6 +187,14 @@ for name, make_texture in (("png", h.write_environment), ("hdr", h.write_hdr_env
     h.check(d[~h.grow(inside, 1)].max() == 0, "skybox %s: the sky around the ice is untouched" % name)
     if name == "png":
         compare_baseline(visible, "ice-view-skybox.png")
+        # Frost (IceRoughness; "Roughness" is ParaView's physically based lighting's): the same
+        # eta=1 ice shows the sky blurred, no longer invisible; nothing changes around it.
+        display.IceRoughness = 1.0
+        Show(sphere, view)
+        frosted = h.difference(h.capture(view, os.path.join(out, "skybox-png-frost.png")), sky)
+        h.check(frosted[interior].mean() > 2 and frosted[~h.grow(inside, 1)].max() == 0,
+                "skybox png: IceRoughness 1 blurs the sky through eta=1 ice (mean %.2f), nothing "
+                "changes around it" % frosted[interior].mean())
     Delete(view)
 
 # 6. The dynamic environment: ice refracts a red ball beside it only when the view renders cube
