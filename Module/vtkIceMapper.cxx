@@ -349,7 +349,8 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
         dynamicCubeMap ? dynamicCubeMap : this->ActiveEnvironmentObject,
         dynamicCubeMap ? frame->CubeMapVersion : this->Environment->GetVersion());
     this->ActiveRoughEnvironment->Activate();
-    this->Prefiltered->BeginSampling();
+    this->Prefiltered->BeginSampling(
+      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState());
   }
   if (this->NormalMap && this->BumpStrength > 0.0)
   {
@@ -417,7 +418,8 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
   if (this->ActiveRoughEnvironment)
   {
     this->ActiveRoughEnvironment->Deactivate();
-    this->Prefiltered->EndSampling();
+    this->Prefiltered->EndSampling(
+      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState());
     this->ActiveRoughEnvironment = nullptr;
   }
   if (this->SinglePassPrepared)

@@ -55,17 +55,19 @@ vtkSmartPointer<vtkTextureObject> MakeCubeMap(
 }
 
 //------------------------------------------------------------------------------
-void vtkIcePrefilteredEnvironment::BeginSampling()
+// Through VTK's state, which keeps the switch in its cache (and checks that cache against OpenGL
+// in builds that report OpenGL errors).
+void vtkIcePrefilteredEnvironment::BeginSampling(vtkOpenGLState* state)
 {
-  this->SeamlessWasOn = glIsEnabled(GL_TEXTURE_CUBE_MAP_SEAMLESS) == GL_TRUE;
-  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  this->SeamlessWasOn = state->GetEnumState(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  state->vtkglEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 }
 
-void vtkIcePrefilteredEnvironment::EndSampling()
+void vtkIcePrefilteredEnvironment::EndSampling(vtkOpenGLState* state)
 {
   if (!this->SeamlessWasOn)
   {
-    glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    state->vtkglDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   }
 }
 
@@ -161,7 +163,7 @@ void vtkIcePrefilteredEnvironment::Filter(vtkOpenGLRenderWindow* window, vtkText
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_CULL_FACE);
   // The rougher levels sample the resampled source across its faces' edges too.
-  this->BeginSampling();
+  this->BeginSampling(state);
   state->PushFramebufferBindings();
   this->FrameBuffer->Bind();
   this->FrameBuffer->ActivateDrawBuffer(0);
@@ -198,7 +200,7 @@ void vtkIcePrefilteredEnvironment::Filter(vtkOpenGLRenderWindow* window, vtkText
   }
   this->Work->Deactivate();
   state->PopFramebufferBindings();
-  this->EndSampling();
+  this->EndSampling(state);
 }
 
 //------------------------------------------------------------------------------

@@ -16,6 +16,7 @@
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -45,8 +46,8 @@ public:
   // Around a draw that samples the result: cube maps filtered across their faces' edges
   // (GL_TEXTURE_CUBE_MAP_SEAMLESS), as OpenGL had it before afterwards. The coarse levels'
   // texels are large: filtered face by face, their seams would show.
-  void BeginSampling();
-  void EndSampling();
+  void BeginSampling(vtkOpenGLState* state);
+  void EndSampling(vtkOpenGLState* state);
 
 private:
   vtkIcePrefilteredEnvironment(const vtkIcePrefilteredEnvironment&) = delete;
