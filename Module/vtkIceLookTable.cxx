@@ -78,24 +78,40 @@ std::vector<Entry> MakeEntries()
     entry.Set = set;
     e.push_back(entry);
   };
-#define ICE_MAPPER_NUMBER(name, help, Property)                                                    \
-  number(                                                                                          \
-    name, help, [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->Get##Property##MinValue(); },  \
-    [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->Get##Property##MaxValue(); },              \
-    [](const Target& t) { return static_cast<double>(t.Mapper->Get##Property()); },                \
-    [](const Target& t, double v) { t.Mapper->Set##Property(v); })
-#define ICE_MAPPER_INTEGER(name, help, Property)                                                   \
+// The look's parameters are the mapper's ice property's; how it is drawn is the mapper's.
+#define ICE_PROPERTY_NUMBER(name, help, Property)                                                  \
   number(                                                                                          \
     name, help,                                                                                    \
     [](vtkIceMapper* m, vtkIceCubeMapPass*) {                                                      \
-      return static_cast<double>(m->Get##Property##MinValue());                                    \
+      return static_cast<double>(m->GetIceProperty()->Get##Property##MinValue());                  \
     },                                                                                             \
     [](vtkIceMapper* m, vtkIceCubeMapPass*) {                                                      \
-      return static_cast<double>(m->Get##Property##MaxValue());                                    \
+      return static_cast<double>(m->GetIceProperty()->Get##Property##MaxValue());                  \
     },                                                                                             \
-    [](const Target& t) { return static_cast<double>(t.Mapper->Get##Property()); },                \
-    [](const Target& t, double v) { t.Mapper->Set##Property(static_cast<int>(v)); },               \
-    Kind::Integer)
+    [](const Target& t) {                                                                          \
+      return static_cast<double>(t.Mapper->GetIceProperty()->Get##Property());                     \
+    },                                                                                             \
+    [](const Target& t, double v) { t.Mapper->GetIceProperty()->Set##Property(v); })
+#define ICE_PROPERTY_INTEGER(name, help, Property)                                                 \
+  ICE_PROPERTY_NUMBER(name, help, Property);                                                       \
+  e.back().Info.Type = Kind::Integer
+#define ICE_PROPERTY_SWITCH(name, help, Property)                                                  \
+  toggle(                                                                                          \
+    name, help,                                                                                    \
+    [](const Target& t) { return t.Mapper->GetIceProperty()->Get##Property() ? 1.0 : 0.0; },       \
+    [](const Target& t, double v) { t.Mapper->GetIceProperty()->Set##Property(v != 0.0); })
+#define ICE_PROPERTY_COLOR(name, help, Property)                                                   \
+  {                                                                                                \
+    Entry color;                                                                                   \
+    color.Info = { name, Kind::Vector, help, false };                                              \
+    color.GetVector = [](const Target& t, double* v) {                                             \
+      t.Mapper->GetIceProperty()->Get##Property(v);                                                \
+    };                                                                                             \
+    color.SetVector = [](const Target& t, const double* v) {                                       \
+      t.Mapper->GetIceProperty()->Set##Property(v);                                                \
+    };                                                                                             \
+    e.push_back(color);                                                                            \
+  }
 #define ICE_MAPPER_SWITCH(name, help, Property)                                                    \
   toggle(                                                                                          \
     name, help, [](const Target& t) { return t.Mapper->Get##Property() ? 1.0 : 0.0; },             \
@@ -105,49 +121,45 @@ std::vector<Entry> MakeEntries()
     name, help, { __VA_ARGS__ },                                                                   \
     [](const Target& t) { return static_cast<double>(t.Mapper->Get##Property()); },                \
     [](const Target& t, double v) { t.Mapper->Set##Property(static_cast<int>(v)); })
-#define ICE_MAPPER_COLOR(name, help, Property)                                                     \
-  {                                                                                                \
-    Entry color;                                                                                   \
-    color.Info = { name, Kind::Vector, help, false };                                              \
-    color.GetVector = [](const Target& t, double* v) { t.Mapper->Get##Property(v); };              \
-    color.SetVector = [](const Target& t, const double* v) { t.Mapper->Set##Property(v); };        \
-    e.push_back(color);                                                                            \
-  }
   const Bound anyLow = [](vtkIceMapper*, vtkIceCubeMapPass*) { return -2147483648.0; };
   const Bound anyHigh = [](vtkIceMapper*, vtkIceCubeMapPass*) { return 2147483647.0; };
 
-  ICE_MAPPER_NUMBER(
+  ICE_PROPERTY_NUMBER(
     "ior", "index of refraction of the ice (glTF's; 1.31 for ice)", IndexOfRefraction);
   // eta is ior's inverse as eq 2 writes it: air / ice, below 1 for ice. Above 1 it would be the
   // optics of air in something denser, which is what a user typing ice's 1.31 here does not mean.
   number(
     "eta", "ratio of refraction indices, air / ice (eq 2): 1 / ior",
-    [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->GetRefractionRatioMinValue(); },
+    [](vtkIceMapper* m, vtkIceCubeMapPass*) {
+      return m->GetIceProperty()->GetRefractionRatioMinValue();
+    },
     [](vtkIceMapper*, vtkIceCubeMapPass*) { return 1.0; },
-    [](const Target& t) { return t.Mapper->GetRefractionRatio(); },
-    [](const Target& t, double v) { t.Mapper->SetRefractionRatio(v); });
+    [](const Target& t) { return t.Mapper->GetIceProperty()->GetRefractionRatio(); },
+    [](const Target& t, double v) { t.Mapper->GetIceProperty()->SetRefractionRatio(v); });
   e.back().Info.SynonymOf = "ior";
-  ICE_MAPPER_COLOR("attenuation-color",
+  ICE_PROPERTY_COLOR("attenuation-color",
     "colour white light has after attenuation-distance in the ice, red,green,blue in [0, 1]",
     AttenuationColor);
-  ICE_MAPPER_NUMBER("attenuation-distance",
+  ICE_PROPERTY_NUMBER("attenuation-distance",
     "distance in the ice after which light has attenuation-color (inf: no absorption)",
     AttenuationDistance);
-  ICE_MAPPER_NUMBER("fresnel-power", "exponent P of the Fresnel term (eq 4)", FresnelPower);
-  ICE_MAPPER_COLOR("color", "ice colour, red,green,blue each in [0, 1]", IceColor);
+  ICE_PROPERTY_NUMBER("fresnel-power", "exponent P of the Fresnel term (eq 4)", FresnelPower);
+  ICE_PROPERTY_COLOR("color", "ice colour, red,green,blue each in [0, 1]", IceColor);
   ICE_MAPPER_SWITCH(
     "two-sided", "refract through the back faces too (with the pass)", TwoSidedRefraction);
   ICE_MAPPER_CHOICE("two-sided-method", "how two-sided refraction goes through the ice",
     TwoSidedMethod, "blended-normals", "exit-point");
-  ICE_MAPPER_NUMBER(
+  ICE_PROPERTY_NUMBER(
     "back-normal-weight", "weight of the back normal (eq 1, blended-normals)", BackNormalWeight);
-  ICE_MAPPER_INTEGER("cracks", "number of crack surfaces inside the ice", NumberOfCracks);
+  ICE_PROPERTY_INTEGER("cracks", "number of crack surfaces inside the ice", NumberOfCracks);
   number(
     "crack-seed", "placement of the cracks", anyLow, anyHigh,
-    [](const Target& t) { return static_cast<double>(t.Mapper->GetCrackSeed()); },
-    [](const Target& t, double v) { t.Mapper->SetCrackSeed(static_cast<int>(v)); }, Kind::Integer);
-  ICE_MAPPER_NUMBER("crack-intensity", "brightness of the cracks' highlights", CrackIntensity);
-  ICE_MAPPER_NUMBER("crack-reflection",
+    [](const Target& t) { return static_cast<double>(t.Mapper->GetIceProperty()->GetCrackSeed()); },
+    [](
+      const Target& t, double v) { t.Mapper->GetIceProperty()->SetCrackSeed(static_cast<int>(v)); },
+    Kind::Integer);
+  ICE_PROPERTY_NUMBER("crack-intensity", "brightness of the cracks' highlights", CrackIntensity);
+  ICE_PROPERTY_NUMBER("crack-reflection",
     "cracks as sheets mirroring the environment, 0 highlights only (single-pass)", CrackReflection);
   ICE_MAPPER_CHOICE(
     "interior", "how cracks and air are rendered", InteriorMethod, "paper-passes", "single-pass");
@@ -155,26 +167,27 @@ std::vector<Entry> MakeEntries()
     CrackClipping, "depth-interval", "geometry");
   ICE_MAPPER_SWITCH(
     "cracks-in-refraction", "cracks bend the refraction like back faces", CracksPerturbRefraction);
-  ICE_MAPPER_INTEGER("air", "number of air-bubble planes", NumberOfAirPlanes);
+  ICE_PROPERTY_INTEGER("air", "number of air-bubble planes", NumberOfAirPlanes);
   number(
     "air-seed", "placement and images of the air", anyLow, anyHigh,
-    [](const Target& t) { return static_cast<double>(t.Mapper->GetAirSeed()); },
-    [](const Target& t, double v) { t.Mapper->SetAirSeed(static_cast<int>(v)); }, Kind::Integer);
-  ICE_MAPPER_NUMBER("milkiness", "0 clear bubbles, 1 white and cloudy", Milkiness);
-  ICE_MAPPER_NUMBER("milky-core",
+    [](const Target& t) { return static_cast<double>(t.Mapper->GetIceProperty()->GetAirSeed()); },
+    [](const Target& t, double v) { t.Mapper->GetIceProperty()->SetAirSeed(static_cast<int>(v)); },
+    Kind::Integer);
+  ICE_PROPERTY_NUMBER("milkiness", "0 clear bubbles, 1 white and cloudy", Milkiness);
+  ICE_PROPERTY_NUMBER("milky-core",
     "a cloudy core of air at the centre, its radius a fraction of the model's half size (0: none)",
     MilkyCoreRadius);
-  ICE_MAPPER_NUMBER("bumps", "strength of the surface bumps (0: smooth)", BumpStrength);
-  ICE_MAPPER_NUMBER("bump-scale", "size of the bumps, a fraction of the model", BumpScale);
-  ICE_MAPPER_NUMBER("roughness",
+  ICE_PROPERTY_NUMBER("bumps", "strength of the surface bumps (0: smooth)", BumpStrength);
+  ICE_PROPERTY_NUMBER("bump-scale", "size of the bumps, a fraction of the model", BumpScale);
+  ICE_PROPERTY_NUMBER("roughness",
     "frost: how rough the surface is, 0 smooth to 1 matte (blurs reflection and refraction)",
     Roughness);
-  ICE_MAPPER_SWITCH("glistening", "direct light, rim light and crack glints", Glistening);
-  ICE_MAPPER_NUMBER(
+  ICE_PROPERTY_SWITCH("glistening", "direct light, rim light and crack glints", Glistening);
+  ICE_PROPERTY_NUMBER(
     "snow", "snow over the whole surface, 0 ice to 1 snow (with glistening)", SnowAmount);
-  ICE_MAPPER_NUMBER("glistening-scale", "size of the glints", GlisteningScale);
-  ICE_MAPPER_NUMBER("glistening-intensity", "brightness of the glints", GlisteningIntensity);
-  ICE_MAPPER_NUMBER(
+  ICE_PROPERTY_NUMBER("glistening-scale", "size of the glints", GlisteningScale);
+  ICE_PROPERTY_NUMBER("glistening-intensity", "brightness of the glints", GlisteningIntensity);
+  ICE_PROPERTY_NUMBER(
     "glistening-alignment", "how sharply glints follow the light", GlisteningAlignmentGain);
   ICE_MAPPER_CHOICE("debug-view", "the paper's Figure 5 views", DebugView, "off", "front-depth",
     "back-depth", "cracks-unclipped", "cracks-clipped", "air");
@@ -212,11 +225,12 @@ std::vector<Entry> MakeEntries()
     "cube-map-culling", "leave props outside a face out of its render",
     [](const Target& t) { return t.CubeMaps->GetFrustumCulling() ? 1.0 : 0.0; },
     [](const Target& t, double v) { t.CubeMaps->SetFrustumCulling(v != 0.0); });
-#undef ICE_MAPPER_NUMBER
-#undef ICE_MAPPER_INTEGER
+#undef ICE_PROPERTY_NUMBER
+#undef ICE_PROPERTY_INTEGER
+#undef ICE_PROPERTY_SWITCH
+#undef ICE_PROPERTY_COLOR
 #undef ICE_MAPPER_SWITCH
 #undef ICE_MAPPER_CHOICE
-#undef ICE_MAPPER_COLOR
 
   auto vector = [&e](const char* name, const char* help, void (vtkCamera::*get)(double[3]),
                   void (vtkCamera::*set)(const double[3])) {

@@ -9,6 +9,7 @@
 #include "vtkIceInteriorLook.h"
 #include "vtkIceOptics.h"
 #include "vtkIcePrefilteredEnvironment.h"
+#include "vtkIcePropertyUniforms.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceSinglePassInterior.h"
 #include "vtkIceStaticEnvironment.h"
@@ -47,37 +48,11 @@ enum ShaderParts
   RoughPart = 64
 };
 
-// Clamps `value` to [low, high] into `member` as vtkSetClampMacro does, but refuses NaN (which
-// the macro would store: every comparison with NaN is false) with a warning naming the
-// parameter. Returns whether `member` changed.
-bool SetClamped(
-  vtkObject* self, const char* name, double value, double low, double high, double& member)
-{
-  if (std::isnan(value))
-  {
-    vtkWarningWithObjectMacro(
-      self, << "Set" << name << "(NaN) ignored: " << name << " stays " << member << ".");
-    return false;
-  }
-  const double clamped = std::min(std::max(value, low), high);
-  if (clamped == member)
-  {
-    return false;
-  }
-  member = clamped;
-  return true;
-}
 }
 
 //------------------------------------------------------------------------------
 vtkIceMapper::vtkIceMapper()
-  : IndexOfRefraction(1.31)
-  , RefractionRatio(1.0 / 1.31)
-  , FresnelPower(3.0)
-  , BackNormalWeight(0.33)
-  , IceColor{ 1.0, 1.0, 1.0 }
-  , AttenuationColor{ 1.0, 1.0, 1.0 }
-  , AttenuationDistance(std::numeric_limits<double>::infinity())
+  : IceProperty(vtkSmartPointer<vtkIceProperty>::New())
   , SinglePass(new vtkIceSinglePassInterior)
   , Interior(new vtkIceInterior)
   , Environment(new vtkIceStaticEnvironment)
@@ -93,19 +68,22 @@ vtkIceMapper::vtkIceMapper()
 vtkIceMapper::~vtkIceMapper() = default;
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::SetNormalMap(vtkTexture* texture)
+void vtkIceMapper::SetIceProperty(vtkIceProperty* property)
 {
-  if (this->NormalMap != texture)
+  if (property && property == this->IceProperty)
   {
-    this->NormalMap = texture;
-    this->Modified();
+    return;
   }
+  this->IceProperty = property ? property : vtkSmartPointer<vtkIceProperty>::New().Get();
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
-vtkTexture* vtkIceMapper::GetNormalMap()
+vtkMTimeType vtkIceMapper::GetMTime()
 {
-  return this->NormalMap;
+  // A change of the look rebuilds what a change of the mapper does (shaders, buffers, the cube
+  // map's OnChange test through the actor's redraw time).
+  return std::max(this->Superclass::GetMTime(), this->IceProperty->GetMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -146,97 +124,6 @@ double vtkIceMapper::InputExtent()
 }
 
 //------------------------------------------------------------------------------
-// The clamped floating-point properties: clamped to the ranges their header declares, NaN
-// refused with a warning (SetClamped).
-#define vtkIceClampedSetter(name)                                                                  \
-  void vtkIceMapper::Set##name(double value)                                                       \
-  {                                                                                                \
-    if (SetClamped(this, #name, value, this->Get##name##MinValue(), this->Get##name##MaxValue(),   \
-          this->name))                                                                             \
-    {                                                                                              \
-      this->Modified();                                                                            \
-    }                                                                                              \
-  }
-vtkIceClampedSetter(FresnelPower)
-vtkIceClampedSetter(BackNormalWeight)
-vtkIceClampedSetter(CrackIntensity)
-vtkIceClampedSetter(CrackReflection)
-vtkIceClampedSetter(Milkiness)
-vtkIceClampedSetter(MilkyCoreRadius)
-vtkIceClampedSetter(Roughness)
-vtkIceClampedSetter(BumpStrength)
-vtkIceClampedSetter(BumpScale)
-vtkIceClampedSetter(GlisteningScale)
-vtkIceClampedSetter(GlisteningIntensity)
-vtkIceClampedSetter(GlisteningAlignmentGain)
-vtkIceClampedSetter(SnowAmount)
-vtkIceClampedSetter(AttenuationDistance)
-#undef vtkIceClampedSetter
-
-//------------------------------------------------------------------------------
-// A colour property: components clamped to [0, 1], NaN refused with a warning. True if changed.
-#define vtkIceColorSetter(name)                                                                    \
-  void vtkIceMapper::Set##name(double red, double green, double blue)                              \
-  {                                                                                                \
-    if (std::isnan(red) || std::isnan(green) || std::isnan(blue))                                  \
-    {                                                                                              \
-      vtkWarningMacro(<< "Set" #name "(" << red << ", " << green << ", " << blue                   \
-                      << ") ignored: a component is NaN; " #name " stays (" << this->name[0]       \
-                      << ", " << this->name[1] << ", " << this->name[2] << ").");                  \
-      return;                                                                                      \
-    }                                                                                              \
-    bool changed = false;                                                                          \
-    const double color[3] = { red, green, blue };                                                  \
-    for (int i = 0; i < 3; ++i)                                                                    \
-    {                                                                                              \
-      changed = SetClamped(this, #name, color[i], 0.0, 1.0, this->name[i]) || changed;             \
-    }                                                                                              \
-    if (changed)                                                                                   \
-    {                                                                                              \
-      this->Modified();                                                                            \
-    }                                                                                              \
-  }
-vtkIceColorSetter(IceColor) vtkIceColorSetter(AttenuationColor)
-#undef vtkIceColorSetter
-
-  //------------------------------------------------------------------------------
-  void vtkIceMapper::SetIndexOfRefraction(double ior)
-{
-  // Both are kept as set, so each reads back exactly what was given.
-  if (SetClamped(this, "IndexOfRefraction", ior, this->GetIndexOfRefractionMinValue(),
-        this->GetIndexOfRefractionMaxValue(), this->IndexOfRefraction))
-  {
-    this->RefractionRatio = 1.0 / this->IndexOfRefraction;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::SetRefractionRatio(double eta)
-{
-  if (SetClamped(this, "RefractionRatio", eta, this->GetRefractionRatioMinValue(),
-        this->GetRefractionRatioMaxValue(), this->RefractionRatio))
-  {
-    this->IndexOfRefraction = 1.0 / this->RefractionRatio;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-double vtkIceMapper::GetAttenuationDistanceMaxValue()
-{
-  return std::numeric_limits<double>::infinity();
-}
-
-//------------------------------------------------------------------------------
-bool vtkIceMapper::Absorbs() const
-{
-  return std::isfinite(this->AttenuationDistance) &&
-    (this->AttenuationColor[0] < 1.0 || this->AttenuationColor[1] < 1.0 ||
-      this->AttenuationColor[2] < 1.0);
-}
-
-//------------------------------------------------------------------------------
 bool vtkIceMapper::HasInterior() const
 {
   const int view = this->DebugView;
@@ -245,14 +132,8 @@ bool vtkIceMapper::HasInterior() const
     return true;
   }
   return view == DebugOff &&
-    (this->NumberOfCracks > 0 || this->NumberOfAirPlanes > 0 ||
-      (this->HasMilkyCore() && this->InteriorMethod == InteriorSinglePass));
-}
-
-//------------------------------------------------------------------------------
-bool vtkIceMapper::HasMilkyCore() const
-{
-  return this->MilkyCoreRadius > 0.0 && this->Milkiness > 0.0;
+    (this->IceProperty->GetNumberOfCracks() > 0 || this->IceProperty->GetNumberOfAirPlanes() > 0 ||
+      (this->IceProperty->HasMilkyCore() && this->InteriorMethod == InteriorSinglePass));
 }
 
 //------------------------------------------------------------------------------
@@ -270,13 +151,13 @@ int vtkIceMapper::GetFrameNeeds()
   {
     needs |= vtkIceFrame::NeedsBackfaceNormals;
   }
-  if (this->Absorbs())
+  if (this->IceProperty->Absorbs())
   {
     needs |= vtkIceFrame::NeedsPathLength;
   }
   const int view = this->DebugView;
   if (view == DebugFrontDepth || view == DebugBackDepth ||
-    (this->CracksPerturbRefraction && this->NumberOfCracks > 0))
+    (this->CracksPerturbRefraction && this->IceProperty->GetNumberOfCracks() > 0))
   {
     needs |= vtkIceFrame::NeedsDepthIntervalBeforeScene;
   }
@@ -296,11 +177,11 @@ int vtkIceMapper::GetFrameNeeds()
 int vtkIceMapper::ShaderVariant() const
 {
   int variant = 0;
-  if (this->BumpStrength > 0.0)
+  if (this->IceProperty->GetBumpStrength() > 0.0)
   {
-    variant |= this->NormalMap ? NormalMapPart : BumpPart;
+    variant |= this->IceProperty->GetNormalMap() ? NormalMapPart : BumpPart;
   }
-  if (this->Glistening)
+  if (this->IceProperty->GetGlistening())
   {
     variant |= GlisteningPart;
   }
@@ -308,7 +189,7 @@ int vtkIceMapper::ShaderVariant() const
   {
     variant |= InteriorPart;
   }
-  if (this->Roughness > 0.0)
+  if (this->IceProperty->GetRoughness() > 0.0)
   {
     variant |= RoughPart;
   }
@@ -342,7 +223,7 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   this->ActiveEnvironmentObject = dynamicCubeMap
     ? nullptr
     : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
-  if (this->Roughness > 0.0)
+  if (this->IceProperty->GetRoughness() > 0.0)
   {
     this->ActiveRoughEnvironment =
       this->Prefiltered->Update(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()),
@@ -352,9 +233,9 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->Prefiltered->BeginSampling(
       static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState());
   }
-  if (this->NormalMap && this->BumpStrength > 0.0)
+  if (this->IceProperty->GetNormalMap() && this->IceProperty->GetBumpStrength() > 0.0)
   {
-    this->NormalMap->Render(ren);
+    this->IceProperty->GetNormalMap()->Render(ren);
   }
   this->WarnSettingsWithoutEffect(frame != nullptr);
   this->Superclass::RenderPieceStart(ren, act);
@@ -381,23 +262,24 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 //------------------------------------------------------------------------------
 void vtkIceMapper::WarnSettingsWithoutEffect(bool withPass)
 {
-  if (this->SnowAmount > 0.0 && !this->Glistening && !this->WarnedSnowWithoutGlistening)
+  if (this->IceProperty->GetSnowAmount() > 0.0 && !this->IceProperty->GetGlistening() &&
+    !this->WarnedSnowWithoutGlistening)
   {
-    vtkWarningMacro(<< "SnowAmount " << this->SnowAmount
+    vtkWarningMacro(<< "SnowAmount " << this->IceProperty->GetSnowAmount()
                     << " shows nothing: the glistening part draws the snow. Turn Glistening on "
                        "to see it.");
     this->WarnedSnowWithoutGlistening = true;
   }
-  if (this->Absorbs() && !withPass && !this->WarnedAbsorptionWithoutPass)
+  if (this->IceProperty->Absorbs() && !withPass && !this->WarnedAbsorptionWithoutPass)
   {
     vtkWarningMacro(<< "AttenuationColor and AttenuationDistance show nothing without vtkIcePass "
                        "on the renderer: its back faces give the path in the ice.");
     this->WarnedAbsorptionWithoutPass = true;
   }
-  if (this->HasMilkyCore() && this->InteriorMethod != InteriorSinglePass &&
+  if (this->IceProperty->HasMilkyCore() && this->InteriorMethod != InteriorSinglePass &&
     !this->WarnedCoreWithPaperPasses)
   {
-    vtkWarningMacro(<< "MilkyCoreRadius " << this->MilkyCoreRadius
+    vtkWarningMacro(<< "MilkyCoreRadius " << this->IceProperty->GetMilkyCoreRadius()
                     << " shows nothing with InteriorPaperPasses: the single-pass interior draws "
                        "the milky core. Set InteriorMethod to InteriorSinglePass to see it.");
     this->WarnedCoreWithPaperPasses = true;
@@ -409,9 +291,9 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Culling->End();
   this->Superclass::RenderPieceFinish(ren, act);
-  if (this->NormalMap && this->BumpStrength > 0.0)
+  if (this->IceProperty->GetNormalMap() && this->IceProperty->GetBumpStrength() > 0.0)
   {
-    this->NormalMap->PostRender(ren);
+    this->IceProperty->GetNormalMap()->PostRender(ren);
   }
   this->Environment->Unbind(ren);
   this->ActiveEnvironmentObject = nullptr;
@@ -500,16 +382,7 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
 void vtkIceMapper::SetIceShaderParameters(
   vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
 {
-  const float tint[3] = { static_cast<float>(this->IceColor[0]),
-    static_cast<float>(this->IceColor[1]), static_cast<float>(this->IceColor[2]) };
-  program->SetUniform3f("iceTint", tint);
-  program->SetUniformf("iceRefractionRatio", static_cast<float>(this->RefractionRatio));
-  const float attenuation[3] = { static_cast<float>(this->AttenuationColor[0]),
-    static_cast<float>(this->AttenuationColor[1]), static_cast<float>(this->AttenuationColor[2]) };
-  program->SetUniform3f("iceAttenuationColor", attenuation);
-  program->SetUniformf(
-    "iceInverseAttenuationDistance", static_cast<float>(1.0 / this->AttenuationDistance));
-  program->SetUniformf("iceFresnelPower", static_cast<float>(this->FresnelPower));
+  vtkIcePropertyUniforms::Set(this->IceProperty, program);
   // A dynamic cube map holds the scene at the raw world direction.
   static const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   program->SetUniformMatrix3x3("iceEnvironmentMatrix",
@@ -525,14 +398,8 @@ void vtkIceMapper::SetIceShaderParameters(
   {
     program->SetUniformi(
       "iceEnvironmentPrefiltered", this->ActiveRoughEnvironment->GetTextureUnit());
-    program->SetUniformf("iceRoughnessLevel",
-      static_cast<float>(vtkIcePrefilteredEnvironment::LevelOf(this->Roughness)));
   }
-  // The parameters of the parts vtkIcePass adds (two-sided refraction, depth debug views).
-  if (program->IsUniformUsed("iceBackNormalWeight"))
-  {
-    program->SetUniformf("iceBackNormalWeight", static_cast<float>(this->BackNormalWeight));
-  }
+  // The parameter of the depth debug views vtkIcePass adds.
   if (program->IsUniformUsed("iceDebugChannel"))
   {
     program->SetUniformi("iceDebugChannel", this->DebugView == DebugFrontDepth ? 0 : 1);
@@ -541,13 +408,12 @@ void vtkIceMapper::SetIceShaderParameters(
   const int variant = this->ShaderVariant();
   if (variant & (BumpPart | NormalMapPart))
   {
-    program->SetUniformf("iceBumpStrength", static_cast<float>(this->BumpStrength));
-    program->SetUniformf(
-      "iceBumpFrequency", static_cast<float>(1.0 / (this->BumpScale * this->InputExtent())));
+    program->SetUniformf("iceBumpFrequency",
+      static_cast<float>(1.0 / (this->IceProperty->GetBumpScale() * this->InputExtent())));
   }
   if (variant & NormalMapPart)
   {
-    program->SetUniformi("iceNormalMap", this->NormalMap->GetTextureUnit());
+    program->SetUniformi("iceNormalMap", this->IceProperty->GetNormalMap()->GetTextureUnit());
   }
   if (variant & GlisteningPart)
   {
@@ -565,10 +431,10 @@ void vtkIceMapper::SetIceShaderParameters(
       this->DrawTextures.push_back(noise);
     }
     vtkIceGlistening::Parameters parameters;
-    parameters.Scale = this->GlisteningScale;
-    parameters.Intensity = this->GlisteningIntensity;
-    parameters.AlignmentGain = this->GlisteningAlignmentGain;
-    parameters.SnowAmount = this->SnowAmount;
+    parameters.Scale = this->IceProperty->GetGlisteningScale();
+    parameters.Intensity = this->IceProperty->GetGlisteningIntensity();
+    parameters.AlignmentGain = this->IceProperty->GetGlisteningAlignmentGain();
+    parameters.SnowAmount = this->IceProperty->GetSnowAmount();
     parameters.NoiseTextureUnit = noise->GetTextureUnit();
     vtkIceGlistening::SetUniforms(program, parameters);
   }
@@ -578,20 +444,20 @@ void vtkIceMapper::SetIceShaderParameters(
     if (!this->SinglePassPrepared)
     {
       vtkIceSinglePassInterior::Settings settings;
-      settings.Cracks = this->InputFlat ? 0 : this->NumberOfCracks;
-      settings.CrackSeed = this->CrackSeed;
-      settings.CrackIntensity = this->CrackIntensity;
-      settings.CrackReflection = this->CrackReflection;
+      settings.Cracks = this->InputFlat ? 0 : this->IceProperty->GetNumberOfCracks();
+      settings.CrackSeed = this->IceProperty->GetCrackSeed();
+      settings.CrackIntensity = this->IceProperty->GetCrackIntensity();
+      settings.CrackReflection = this->IceProperty->GetCrackReflection();
       settings.CrackBumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
       this->GetLookBounds(settings.Bounds);
-      settings.AirPlanes = this->NumberOfAirPlanes;
-      settings.AirSeed = this->AirSeed;
-      settings.Milkiness = this->Milkiness;
-      if (this->HasMilkyCore())
+      settings.AirPlanes = this->IceProperty->GetNumberOfAirPlanes();
+      settings.AirSeed = this->IceProperty->GetAirSeed();
+      settings.Milkiness = this->IceProperty->GetMilkiness();
+      if (this->IceProperty->HasMilkyCore())
       {
-        settings.CoreDensity = vtkIceInteriorLook::CoreDensity(this->Milkiness);
-        vtkIceInteriorLook::CoreFrame(
-          settings.Bounds, this->MilkyCoreRadius, settings.CoreCenter, settings.CoreScale);
+        settings.CoreDensity = vtkIceInteriorLook::CoreDensity(this->IceProperty->GetMilkiness());
+        vtkIceInteriorLook::CoreFrame(settings.Bounds, this->IceProperty->GetMilkyCoreRadius(),
+          settings.CoreCenter, settings.CoreScale);
       }
       settings.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
         : this->DebugView == DebugAir                        ? vtkIceInteriorLook::DebugAir
@@ -604,8 +470,8 @@ void vtkIceMapper::SetIceShaderParameters(
       {
         settings.Cracks = 0;
       }
-      this->SinglePass->Prepare(
-        ren, act, this->PreparedInput, settings, this->Interior->GetAirAtlas(this->AirSeed));
+      this->SinglePass->Prepare(ren, act, this->PreparedInput, settings,
+        this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
       this->SinglePassPrepared = true;
     }
     this->SinglePass->SetUniforms(program);
@@ -629,11 +495,11 @@ vtkPolyData* vtkIceMapper::GetCrackGeometry()
     return nullptr;
   }
   // Ice without volume has no inside to hold cracks.
-  const int cracks = this->InputFlat ? 0 : this->NumberOfCracks;
+  const int cracks = this->InputFlat ? 0 : this->IceProperty->GetNumberOfCracks();
   double bounds[6];
   this->GetLookBounds(bounds);
-  return this->Interior->UpdateCracks(this->PreparedInput, bounds, cracks, this->CrackSeed,
-    cracks > 0 && this->UsableCrackClipping() == Geometry);
+  return this->Interior->UpdateCracks(this->PreparedInput, bounds, cracks,
+    this->IceProperty->GetCrackSeed(), cracks > 0 && this->UsableCrackClipping() == Geometry);
 }
 
 //------------------------------------------------------------------------------
@@ -711,7 +577,7 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
   look.ClipToInterval = this->UsableCrackClipping() == DepthInterval && !unclipped;
   look.Debug = debugCracks;
   look.Unclipped = unclipped;
-  look.Intensity = this->CrackIntensity;
+  look.Intensity = this->IceProperty->GetCrackIntensity();
   look.BumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
   this->HelpersSawPass = true;
   this->Interior->DrawCracks(ren, actor, look, overlay);
@@ -722,8 +588,8 @@ void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
 void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
 {
   const bool debugAir = this->DebugView == DebugAir;
-  if (this->NumberOfAirPlanes == 0 || (this->DebugView != DebugOff && !debugAir) ||
-    this->UsesSinglePassInterior())
+  if (this->IceProperty->GetNumberOfAirPlanes() == 0 ||
+    (this->DebugView != DebugOff && !debugAir) || this->UsesSinglePassInterior())
   {
     return;
   }
@@ -735,8 +601,9 @@ void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
   this->HelpersSawPass = true;
   double bounds[6];
   this->GetLookBounds(bounds);
-  this->Interior->DrawAir(ren, actor, this->PreparedInput, bounds, this->NumberOfAirPlanes,
-    this->AirSeed, this->Milkiness, debugAir);
+  this->Interior->DrawAir(ren, actor, this->PreparedInput, bounds,
+    this->IceProperty->GetNumberOfAirPlanes(), this->IceProperty->GetAirSeed(),
+    this->IceProperty->GetMilkiness(), debugAir);
 }
 
 //------------------------------------------------------------------------------
@@ -757,14 +624,8 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "IndexOfRefraction: " << this->IndexOfRefraction << "\n";
-  os << indent << "RefractionRatio: " << this->RefractionRatio << "\n";
-  os << indent << "AttenuationColor: (" << this->AttenuationColor[0] << ", "
-     << this->AttenuationColor[1] << ", " << this->AttenuationColor[2] << ")\n";
-  os << indent << "AttenuationDistance: " << this->AttenuationDistance << "\n";
-  os << indent << "Roughness: " << this->Roughness << "\n";
-  os << indent << "FresnelPower: " << this->FresnelPower << "\n";
-  os << indent << "BackNormalWeight: " << this->BackNormalWeight << "\n";
+  os << indent << "IceProperty:\n";
+  this->IceProperty->PrintSelf(os, indent.GetNextIndent());
   os << indent << "PlacementBounds: " << this->PlacementBounds[0];
   for (int i = 1; i < 6; ++i)
   {
@@ -778,28 +639,10 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
   os << indent << "InteriorMethod: "
      << (this->InteriorMethod == InteriorSinglePass ? "SinglePass" : "PaperPasses") << "\n";
-  os << indent << "IceColor: (" << this->IceColor[0] << ", " << this->IceColor[1] << ", "
-     << this->IceColor[2] << ")\n";
-  os << indent << "NumberOfCracks: " << this->NumberOfCracks << "\n";
-  os << indent << "CrackSeed: " << this->CrackSeed << "\n";
-  os << indent << "CrackIntensity: " << this->CrackIntensity << "\n";
-  os << indent << "CrackReflection: " << this->CrackReflection << "\n";
   os << indent
      << "CrackClipping: " << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval")
      << "\n";
   os << indent << "CracksPerturbRefraction: " << (this->CracksPerturbRefraction ? "On" : "Off")
      << "\n";
-  os << indent << "NumberOfAirPlanes: " << this->NumberOfAirPlanes << "\n";
-  os << indent << "AirSeed: " << this->AirSeed << "\n";
-  os << indent << "Milkiness: " << this->Milkiness << "\n";
-  os << indent << "MilkyCoreRadius: " << this->MilkyCoreRadius << "\n";
-  os << indent << "BumpStrength: " << this->BumpStrength << "\n";
-  os << indent << "BumpScale: " << this->BumpScale << "\n";
-  os << indent << "NormalMap: " << this->NormalMap.Get() << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
-  os << indent << "Glistening: " << (this->Glistening ? "On" : "Off") << "\n";
-  os << indent << "SnowAmount: " << this->SnowAmount << "\n";
-  os << indent << "GlisteningScale: " << this->GlisteningScale << "\n";
-  os << indent << "GlisteningIntensity: " << this->GlisteningIntensity << "\n";
-  os << indent << "GlisteningAlignmentGain: " << this->GlisteningAlignmentGain << "\n";
 }

@@ -23,6 +23,10 @@
  * BumpScale make the surface bumpy. Air, cracks and bumps are on by default (the paper's full
  * look); set them to 0 for clean optics.
  *
+ * The look's parameters (optics, cracks, air, bumps, glistening) are on the mapper's
+ * vtkIceProperty (GetIceProperty, SetIceProperty to share one between mappers); the mapper's
+ * setters of those names set them there. How the ice is drawn is set on the mapper.
+ *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn. Flat
  * input (all points in one plane: no volume, no inside) is drawn as a surface without cracks,
@@ -33,6 +37,7 @@
 #define vtkIceMapper_h
 
 #include "RenderingIceModule.h" // for export macro
+#include "vtkIceProperty.h"     // for the forwarded parameters
 #include "vtkIceWorldSpaceMapper.h"
 
 #include <map>    // for members
@@ -58,74 +63,198 @@ public:
 
   ///@{
   /**
-   * The ice's index of refraction, as glTF's KHR_materials_ior means it (relative to the air
-   * around it). Default 1.31, ice's. The ratio the optics use (eta of eq 2, RefractionRatio) is
-   * its inverse: setting one sets the other. Clamped to [0.05, 20]; 1 lets rays pass undeflected.
-   * NaN is refused with a warning.
+   * The look of the ice: its material parameters (vtkIceProperty). A mapper has its own until
+   * one is set; mappers may share one, as actors share a vtkProperty. Setting nullptr gives the
+   * mapper a new property with the defaults.
    */
-  virtual void SetIndexOfRefraction(double ior);
-  virtual double GetIndexOfRefractionMinValue() { return 0.05; }
-  virtual double GetIndexOfRefractionMaxValue() { return 20.0; }
-  vtkGetMacro(IndexOfRefraction, double);
+  void SetIceProperty(vtkIceProperty* property);
+  vtkIceProperty* GetIceProperty() { return this->IceProperty; }
   ///@}
+
+  /**
+   * The mapper's modification time, its ice property's included.
+   */
+  vtkMTimeType GetMTime() override;
 
   ///@{
   /**
-   * Ratio of refraction indices, from / to (eta of eq 2): 1 / IndexOfRefraction, which it sets.
-   * Default 1 / 1.31. Clamped to [0.05, 20]; a value of 1 lets rays pass undeflected. NaN is
-   * refused with a warning (this and the other floating-point parameters clamp as
-   * vtkSetClampMacro does, which would store NaN).
+   * The ice property's parameters, set and read on GetIceProperty(): see vtkIceProperty for
+   * their meanings, defaults and ranges. Look parameters added later are on vtkIceProperty only.
    */
-  virtual void SetRefractionRatio(double eta);
-  virtual double GetRefractionRatioMinValue() { return 0.05; }
-  virtual double GetRefractionRatioMaxValue() { return 20.0; }
-  vtkGetMacro(RefractionRatio, double);
-  ///@}
-
-  ///@{
-  /**
-   * Absorption by the distance the light travels in the ice (Beer-Lambert), with glTF
-   * KHR_materials_volume's meaning: white light that has travelled AttenuationDistance in the
-   * ice has the colour AttenuationColor. Defaults: white and infinity (no absorption). The
-   * distance is the refracted ray's path from the front face to the back face behind it, so it
-   * needs vtkIcePass on the renderer (without it the ice does not absorb, and the mapper says
-   * so once): with
-   * TwoSidedExitPoint the path to the exit point, otherwise the eye ray's. Colour components are
-   * clamped to [0, 1], the distance to [1e-6, infinity]; NaN is refused with a warning.
-   */
-  virtual void SetAttenuationColor(double red, double green, double blue);
-  virtual void SetAttenuationColor(const double color[3])
+  void SetIndexOfRefraction(double value) { this->GetIceProperty()->SetIndexOfRefraction(value); }
+  double GetIndexOfRefraction() { return this->GetIceProperty()->GetIndexOfRefraction(); }
+  double GetIndexOfRefractionMinValue()
   {
-    this->SetAttenuationColor(color[0], color[1], color[2]);
+    return this->GetIceProperty()->GetIndexOfRefractionMinValue();
   }
-  vtkGetVector3Macro(AttenuationColor, double);
-  virtual void SetAttenuationDistance(double distance);
-  virtual double GetAttenuationDistanceMinValue() { return 1.0e-6; }
-  virtual double GetAttenuationDistanceMaxValue();
-  vtkGetMacro(AttenuationDistance, double);
-  ///@}
-
-  ///@{
-  /**
-   * Exponent of the Fresnel approximation f = (1 - |e.n|)^P (eq 4). Default 3.
-   * Larger values show less reflection away from the silhouette. Clamped to [0, 1e6]; NaN is
-   * refused with a warning.
-   */
-  virtual void SetFresnelPower(double power);
-  virtual double GetFresnelPowerMinValue() { return 0.0; }
-  virtual double GetFresnelPowerMaxValue() { return 1.0e6; }
-  vtkGetMacro(FresnelPower, double);
-  ///@}
-
-  ///@{
-  /**
-   * Weight a of the back-face normal in the blended refraction normal (eq 1). Default 0.33.
-   * Used by two-sided refraction; clamped to [0, 1]; NaN is refused with a warning.
-   */
-  virtual void SetBackNormalWeight(double weight);
-  virtual double GetBackNormalWeightMinValue() { return 0.0; }
-  virtual double GetBackNormalWeightMaxValue() { return 1.0; }
-  vtkGetMacro(BackNormalWeight, double);
+  double GetIndexOfRefractionMaxValue()
+  {
+    return this->GetIceProperty()->GetIndexOfRefractionMaxValue();
+  }
+  void SetRefractionRatio(double value) { this->GetIceProperty()->SetRefractionRatio(value); }
+  double GetRefractionRatio() { return this->GetIceProperty()->GetRefractionRatio(); }
+  double GetRefractionRatioMinValue()
+  {
+    return this->GetIceProperty()->GetRefractionRatioMinValue();
+  }
+  double GetRefractionRatioMaxValue()
+  {
+    return this->GetIceProperty()->GetRefractionRatioMaxValue();
+  }
+  void SetAttenuationColor(double red, double green, double blue)
+  {
+    this->GetIceProperty()->SetAttenuationColor(red, green, blue);
+  }
+  void SetAttenuationColor(const double color[3])
+  {
+    this->GetIceProperty()->SetAttenuationColor(color);
+  }
+  double* GetAttenuationColor() VTK_SIZEHINT(3)
+  {
+    return this->GetIceProperty()->GetAttenuationColor();
+  }
+  void GetAttenuationColor(double color[3]) { this->GetIceProperty()->GetAttenuationColor(color); }
+  void SetAttenuationDistance(double value)
+  {
+    this->GetIceProperty()->SetAttenuationDistance(value);
+  }
+  double GetAttenuationDistance() { return this->GetIceProperty()->GetAttenuationDistance(); }
+  double GetAttenuationDistanceMinValue()
+  {
+    return this->GetIceProperty()->GetAttenuationDistanceMinValue();
+  }
+  double GetAttenuationDistanceMaxValue()
+  {
+    return this->GetIceProperty()->GetAttenuationDistanceMaxValue();
+  }
+  void SetFresnelPower(double value) { this->GetIceProperty()->SetFresnelPower(value); }
+  double GetFresnelPower() { return this->GetIceProperty()->GetFresnelPower(); }
+  double GetFresnelPowerMinValue() { return this->GetIceProperty()->GetFresnelPowerMinValue(); }
+  double GetFresnelPowerMaxValue() { return this->GetIceProperty()->GetFresnelPowerMaxValue(); }
+  void SetBackNormalWeight(double value) { this->GetIceProperty()->SetBackNormalWeight(value); }
+  double GetBackNormalWeight() { return this->GetIceProperty()->GetBackNormalWeight(); }
+  double GetBackNormalWeightMinValue()
+  {
+    return this->GetIceProperty()->GetBackNormalWeightMinValue();
+  }
+  double GetBackNormalWeightMaxValue()
+  {
+    return this->GetIceProperty()->GetBackNormalWeightMaxValue();
+  }
+  void SetIceColor(double red, double green, double blue)
+  {
+    this->GetIceProperty()->SetIceColor(red, green, blue);
+  }
+  void SetIceColor(const double color[3]) { this->GetIceProperty()->SetIceColor(color); }
+  double* GetIceColor() VTK_SIZEHINT(3) { return this->GetIceProperty()->GetIceColor(); }
+  void GetIceColor(double color[3]) { this->GetIceProperty()->GetIceColor(color); }
+  void SetRoughness(double value) { this->GetIceProperty()->SetRoughness(value); }
+  double GetRoughness() { return this->GetIceProperty()->GetRoughness(); }
+  double GetRoughnessMinValue() { return this->GetIceProperty()->GetRoughnessMinValue(); }
+  double GetRoughnessMaxValue() { return this->GetIceProperty()->GetRoughnessMaxValue(); }
+  void SetNumberOfCracks(int value) { this->GetIceProperty()->SetNumberOfCracks(value); }
+  int GetNumberOfCracks() { return this->GetIceProperty()->GetNumberOfCracks(); }
+  int GetNumberOfCracksMinValue() { return this->GetIceProperty()->GetNumberOfCracksMinValue(); }
+  int GetNumberOfCracksMaxValue() { return this->GetIceProperty()->GetNumberOfCracksMaxValue(); }
+  void SetCrackSeed(int value) { this->GetIceProperty()->SetCrackSeed(value); }
+  int GetCrackSeed() { return this->GetIceProperty()->GetCrackSeed(); }
+  void SetCrackIntensity(double value) { this->GetIceProperty()->SetCrackIntensity(value); }
+  double GetCrackIntensity() { return this->GetIceProperty()->GetCrackIntensity(); }
+  double GetCrackIntensityMinValue() { return this->GetIceProperty()->GetCrackIntensityMinValue(); }
+  double GetCrackIntensityMaxValue() { return this->GetIceProperty()->GetCrackIntensityMaxValue(); }
+  void SetCrackReflection(double value) { this->GetIceProperty()->SetCrackReflection(value); }
+  double GetCrackReflection() { return this->GetIceProperty()->GetCrackReflection(); }
+  double GetCrackReflectionMinValue()
+  {
+    return this->GetIceProperty()->GetCrackReflectionMinValue();
+  }
+  double GetCrackReflectionMaxValue()
+  {
+    return this->GetIceProperty()->GetCrackReflectionMaxValue();
+  }
+  void SetNumberOfAirPlanes(int value) { this->GetIceProperty()->SetNumberOfAirPlanes(value); }
+  int GetNumberOfAirPlanes() { return this->GetIceProperty()->GetNumberOfAirPlanes(); }
+  int GetNumberOfAirPlanesMinValue()
+  {
+    return this->GetIceProperty()->GetNumberOfAirPlanesMinValue();
+  }
+  int GetNumberOfAirPlanesMaxValue()
+  {
+    return this->GetIceProperty()->GetNumberOfAirPlanesMaxValue();
+  }
+  void SetAirSeed(int value) { this->GetIceProperty()->SetAirSeed(value); }
+  int GetAirSeed() { return this->GetIceProperty()->GetAirSeed(); }
+  void SetMilkiness(double value) { this->GetIceProperty()->SetMilkiness(value); }
+  double GetMilkiness() { return this->GetIceProperty()->GetMilkiness(); }
+  double GetMilkinessMinValue() { return this->GetIceProperty()->GetMilkinessMinValue(); }
+  double GetMilkinessMaxValue() { return this->GetIceProperty()->GetMilkinessMaxValue(); }
+  void SetMilkyCoreRadius(double value) { this->GetIceProperty()->SetMilkyCoreRadius(value); }
+  double GetMilkyCoreRadius() { return this->GetIceProperty()->GetMilkyCoreRadius(); }
+  double GetMilkyCoreRadiusMinValue()
+  {
+    return this->GetIceProperty()->GetMilkyCoreRadiusMinValue();
+  }
+  double GetMilkyCoreRadiusMaxValue()
+  {
+    return this->GetIceProperty()->GetMilkyCoreRadiusMaxValue();
+  }
+  void SetBumpStrength(double value) { this->GetIceProperty()->SetBumpStrength(value); }
+  double GetBumpStrength() { return this->GetIceProperty()->GetBumpStrength(); }
+  double GetBumpStrengthMinValue() { return this->GetIceProperty()->GetBumpStrengthMinValue(); }
+  double GetBumpStrengthMaxValue() { return this->GetIceProperty()->GetBumpStrengthMaxValue(); }
+  void SetBumpScale(double value) { this->GetIceProperty()->SetBumpScale(value); }
+  double GetBumpScale() { return this->GetIceProperty()->GetBumpScale(); }
+  double GetBumpScaleMinValue() { return this->GetIceProperty()->GetBumpScaleMinValue(); }
+  double GetBumpScaleMaxValue() { return this->GetIceProperty()->GetBumpScaleMaxValue(); }
+  void SetNormalMap(vtkTexture* texture) { this->GetIceProperty()->SetNormalMap(texture); }
+  vtkTexture* GetNormalMap() { return this->GetIceProperty()->GetNormalMap(); }
+  void SetGlistening(bool value) { this->GetIceProperty()->SetGlistening(value); }
+  bool GetGlistening() { return this->GetIceProperty()->GetGlistening(); }
+  void GlisteningOn() { this->GetIceProperty()->GlisteningOn(); }
+  void GlisteningOff() { this->GetIceProperty()->GlisteningOff(); }
+  void SetGlisteningScale(double value) { this->GetIceProperty()->SetGlisteningScale(value); }
+  double GetGlisteningScale() { return this->GetIceProperty()->GetGlisteningScale(); }
+  double GetGlisteningScaleMinValue()
+  {
+    return this->GetIceProperty()->GetGlisteningScaleMinValue();
+  }
+  double GetGlisteningScaleMaxValue()
+  {
+    return this->GetIceProperty()->GetGlisteningScaleMaxValue();
+  }
+  void SetGlisteningIntensity(double value)
+  {
+    this->GetIceProperty()->SetGlisteningIntensity(value);
+  }
+  double GetGlisteningIntensity() { return this->GetIceProperty()->GetGlisteningIntensity(); }
+  double GetGlisteningIntensityMinValue()
+  {
+    return this->GetIceProperty()->GetGlisteningIntensityMinValue();
+  }
+  double GetGlisteningIntensityMaxValue()
+  {
+    return this->GetIceProperty()->GetGlisteningIntensityMaxValue();
+  }
+  void SetGlisteningAlignmentGain(double value)
+  {
+    this->GetIceProperty()->SetGlisteningAlignmentGain(value);
+  }
+  double GetGlisteningAlignmentGain()
+  {
+    return this->GetIceProperty()->GetGlisteningAlignmentGain();
+  }
+  double GetGlisteningAlignmentGainMinValue()
+  {
+    return this->GetIceProperty()->GetGlisteningAlignmentGainMinValue();
+  }
+  double GetGlisteningAlignmentGainMaxValue()
+  {
+    return this->GetIceProperty()->GetGlisteningAlignmentGainMaxValue();
+  }
+  void SetSnowAmount(double value) { this->GetIceProperty()->SetSnowAmount(value); }
+  double GetSnowAmount() { return this->GetIceProperty()->GetSnowAmount(); }
+  double GetSnowAmountMinValue() { return this->GetIceProperty()->GetSnowAmountMinValue(); }
+  double GetSnowAmountMaxValue() { return this->GetIceProperty()->GetSnowAmountMaxValue(); }
   ///@}
 
   ///@{
@@ -210,65 +339,6 @@ public:
   double* GetBounds() override;
   void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
 
-  ///@{
-  /**
-   * Tint multiplied into the ice colour, each component clamped to [0, 1]. Default white. A
-   * colour with a NaN component is refused with a warning. When the mapper colours by scalars
-   * (ScalarVisibility with point scalars or a selected point array, mapped through the lookup
-   * table as by any VTK mapper), the mapped colour of each point is the tint instead; refraction
-   * and reflection stay. Cell arrays do not tint the ice. Unlike other VTK mappers,
-   * ScalarVisibility is off by default: a surface that carries scalars (an iso-surface from
-   * vtkContourFilter) keeps the ice colour until ScalarVisibilityOn() asks for the tint.
-   */
-  virtual void SetIceColor(double red, double green, double blue);
-  virtual void SetIceColor(const double color[3])
-  {
-    this->SetIceColor(color[0], color[1], color[2]);
-  }
-  vtkGetVector3Macro(IceColor, double);
-  ///@}
-
-  ///@{
-  /**
-   * Number of crack surfaces inside the ice (drawn by vtkIcePass). Default 2; clamped to
-   * [0, 1000]. They cost one draw whatever their number.
-   */
-  vtkSetClampMacro(NumberOfCracks, int, 0, 1000);
-  vtkGetMacro(NumberOfCracks, int);
-  ///@}
-
-  ///@{
-  /**
-   * Seed of the cracks' models, rotations and positions: the same seed gives the same cracks.
-   */
-  vtkSetMacro(CrackSeed, int);
-  vtkGetMacro(CrackSeed, int);
-  ///@}
-
-  ///@{
-  /**
-   * Brightness of the cracks' highlights. Default 1. Clamped to [0, 100]; NaN is refused with a
-   * warning.
-   */
-  virtual void SetCrackIntensity(double intensity);
-  virtual double GetCrackIntensityMinValue() { return 0.0; }
-  virtual double GetCrackIntensityMaxValue() { return 100.0; }
-  vtkGetMacro(CrackIntensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * Cracks as sheets: how much of the reflectance of a thin gap of air in the ice (Fresnel's,
-   * all of it at glancing angles: total internal reflection) a crack mirrors of the environment,
-   * its outline whitening with it. 0: the highlights alone, the paper's look. Default 0.4.
-   * Clamped to [0, 1]. Drawn by the single-pass interior (InteriorSinglePass) with vtkIcePass.
-   */
-  virtual void SetCrackReflection(double reflection);
-  virtual double GetCrackReflectionMinValue() { return 0.0; }
-  virtual double GetCrackReflectionMaxValue() { return 1.0; }
-  vtkGetMacro(CrackReflection, double);
-  ///@}
-
   enum CrackClippingModes
   {
     DepthInterval = 0, // per fragment, against the ice's [front, back] depth (the paper)
@@ -294,144 +364,6 @@ public:
   vtkSetMacro(CracksPerturbRefraction, bool);
   vtkGetMacro(CracksPerturbRefraction, bool);
   vtkBooleanMacro(CracksPerturbRefraction, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Number of air-bubble planes inside the ice (drawn by vtkIcePass, alpha blended, back to
-   * front, clipped to the ice). Default 19, as in the paper's measurements; clamped to
-   * [0, 1000]. 0 turns the air off.
-   */
-  vtkSetClampMacro(NumberOfAirPlanes, int, 0, 1000);
-  vtkGetMacro(NumberOfAirPlanes, int);
-  ///@}
-
-  ///@{
-  /**
-   * Seed of the air planes' positions, orientations and images. Default 1.
-   */
-  vtkSetMacro(AirSeed, int);
-  vtkGetMacro(AirSeed, int);
-  ///@}
-
-  ///@{
-  /**
-   * How white and cloudy the air makes the ice: 0 sparse clear bubbles, 1 milky. Default 0.5.
-   */
-  virtual void SetMilkiness(double milkiness);
-  virtual double GetMilkinessMinValue() { return 0.0; }
-  virtual double GetMilkinessMaxValue() { return 1.0; }
-  vtkGetMacro(Milkiness, double);
-  ///@}
-
-  ///@{
-  /**
-   * A milky core: air gathered where the ice froze last, around the centre of its bounds, as a
-   * cloud that whitens what is seen through it (by Milkiness: a ray through its centre at
-   * Milkiness 1 loses 98 % of what is behind) and draws the air planes' bubbles towards it. The
-   * core's radius is this fraction of the ice's half size along each axis; the cloud thins
-   * smoothly beyond it. 0 (the default): no core, the air planes spread evenly. Clamped to
-   * [0, 10]. Drawn by the single-pass interior (InteriorSinglePass) with vtkIcePass.
-   */
-  virtual void SetMilkyCoreRadius(double radius);
-  virtual double GetMilkyCoreRadiusMinValue() { return 0.0; }
-  virtual double GetMilkyCoreRadiusMaxValue() { return 10.0; }
-  vtkGetMacro(MilkyCoreRadius, double);
-  ///@}
-
-  ///@{
-  /**
-   * Frost: how rough the surface is, in [0, 1] (glTF's roughness: GGX with alpha = roughness^2).
-   * Reflection and refraction both show the environment averaged over the rough surface's lobe
-   * (the environment prefiltered once per change of it, static or dynamic), as cold ice covered
-   * in small crystals does. 0 (the default): a mirror-smooth surface, the paper's look.
-   */
-  virtual void SetRoughness(double roughness);
-  virtual double GetRoughnessMinValue() { return 0.0; }
-  virtual double GetRoughnessMaxValue() { return 1.0; }
-  vtkGetMacro(Roughness, double);
-  ///@}
-
-  ///@{
-  /**
-   * A bumpy surface: how far the normal tilts (0 = smooth, the paper's clean optics) and the size
-   * of a bump as a fraction of the ice's largest extent. The bumps are fixed to the model, so they
-   * do not swim when the camera moves, and they drive reflection, refraction and Fresnel.
-   * Defaults 0.08 and 0.15.
-   */
-  virtual void SetBumpStrength(double bumpStrength);
-  virtual double GetBumpStrengthMinValue() { return 0.0; }
-  virtual double GetBumpStrengthMaxValue() { return 10.0; }
-  vtkGetMacro(BumpStrength, double);
-  virtual void SetBumpScale(double bumpScale);
-  virtual double GetBumpScaleMinValue() { return 1.0e-4; }
-  virtual double GetBumpScaleMaxValue() { return 100.0; }
-  vtkGetMacro(BumpScale, double);
-  ///@}
-
-  ///@{
-  /**
-   * A tangent-space normal map (RGB, repeat on) used instead of the procedural bumps, projected
-   * on the three model planes; BumpStrength scales it and BumpScale is the size of one repeat.
-   */
-  void SetNormalMap(vtkTexture* texture);
-  vtkTexture* GetNormalMap();
-  ///@}
-
-  ///@{
-  /**
-   * Glistening ice and snow (Liquidiced): direct light from the scene's lights (Phong with a
-   * broad, soft specular on a subtle wavy bump), rim light, and two layers of crack glints (one
-   * roughly parallel to the surface, one of any orientation) from a random normal texture, crisp
-   * at any distance. Added to the ice; with SnowAmount 1 the surface is snow instead. Default off.
-   */
-  vtkSetMacro(Glistening, bool);
-  vtkGetMacro(Glistening, bool);
-  vtkBooleanMacro(Glistening, bool);
-  ///@}
-
-  ///@{
-  /**
-   * With Glistening: size of a crack cell in the input's units. Default 0.03; clamped to
-   * [1e-6, 1e6].
-   */
-  virtual void SetGlisteningScale(double glisteningScale);
-  virtual double GetGlisteningScaleMinValue() { return 1.0e-6; }
-  virtual double GetGlisteningScaleMaxValue() { return 1.0e6; }
-  vtkGetMacro(GlisteningScale, double);
-  ///@}
-
-  ///@{
-  /**
-   * With Glistening: brightness of the glints. Default 1; clamped to [0, 100].
-   */
-  virtual void SetGlisteningIntensity(double glisteningIntensity);
-  virtual double GetGlisteningIntensityMinValue() { return 0.0; }
-  virtual double GetGlisteningIntensityMaxValue() { return 100.0; }
-  vtkGetMacro(GlisteningIntensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * With Glistening: gain of the glints where the view looks along a light's direction (the light
-   * behind the viewer), where the surface specular and the parallel crack layer are missing.
-   * Default 2 (doubled, as in Liquidiced); 1 turns the intensification off. Clamped to [1, 10].
-   */
-  virtual void SetGlisteningAlignmentGain(double glisteningAlignmentGain);
-  virtual double GetGlisteningAlignmentGainMinValue() { return 1.0; }
-  virtual double GetGlisteningAlignmentGainMaxValue() { return 10.0; }
-  vtkGetMacro(GlisteningAlignmentGain, double);
-  ///@}
-
-  ///@{
-  /**
-   * With Glistening: 0 gives ice, 1 snow (white, diffuse), values between blend the two looks.
-   * Default 0; clamped to [0, 1]. Snow without Glistening shows nothing: the mapper says so once.
-   */
-  virtual void SetSnowAmount(double snowAmount);
-  virtual double GetSnowAmountMinValue() { return 0.0; }
-  virtual double GetSnowAmountMaxValue() { return 1.0; }
-  vtkGetMacro(SnowAmount, double);
   ///@}
 
   enum InteriorMethods
@@ -528,43 +460,18 @@ protected:
   int UsableCrackClipping();
 
   // Whether the interior (cracks or air) is drawn in this frame, and by which method.
-  bool Absorbs() const; // absorption set: a path length is needed
   bool HasInterior() const;
-  bool HasMilkyCore() const; // MilkyCoreRadius and Milkiness above 0
   bool UsesSinglePassInterior() const;
 
-  double IndexOfRefraction;
-  double RefractionRatio;
-  double FresnelPower;
-  double BackNormalWeight;
-  double IceColor[3];
-  double AttenuationColor[3];
-  double AttenuationDistance;
+  vtkSmartPointer<vtkIceProperty> IceProperty; // never null
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
   int InteriorMethod = InteriorSinglePass;
-  int NumberOfCracks = 2;
-  int CrackSeed = 1;
-  double CrackIntensity = 1.0;
-  double CrackReflection = 0.4;
   int CrackClipping = DepthInterval;
   bool CracksPerturbRefraction = false;
   int DebugView = DebugOff;
   bool WarnWithoutEnvironment = true;
-  int NumberOfAirPlanes = 19;
-  int AirSeed = 1;
-  double Milkiness = 0.5;
-  double MilkyCoreRadius = 0.0;
-  double Roughness = 0.0;
-  double BumpStrength = 0.08;
-  double BumpScale = 0.15;
-  vtkSmartPointer<vtkTexture> NormalMap;
   vtkIdType NumberOfCrackDraws = 0;
-  bool Glistening = false;
-  double SnowAmount = 0.0;
-  double GlisteningScale = 0.03;
-  double GlisteningIntensity = 1.0;
-  double GlisteningAlignmentGain = 2.0;
   vtkSmartPointer<vtkIceGlisteningTexture> GlisteningNoise;
 
   std::map<const vtkOpenGLHelper*, int> ShaderVariantBuilt;

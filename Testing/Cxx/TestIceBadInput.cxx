@@ -337,6 +337,8 @@ bool CheckParameters()
   vtkNew<vtkIceMapper> mapper;
   vtkNew<IceTest::MessageRecorder> recorder;
   recorder->Watch(mapper);
+  // The look's parameters are its ice property's, which warns about them.
+  recorder->Watch(mapper->GetIceProperty());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
 

@@ -4,6 +4,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkIceMapper.h"
+#include "vtkIceProperty.h"
 #include "vtkIceRedistributeObjects.h"
 #include "vtkMath.h"
 #include "vtkMultiBlockDataSet.h"
@@ -35,6 +36,8 @@ vtkIceRepresentation::vtkIceRepresentation()
   // Without a skybox ParaView's views have no environment: the ice shows the view's background
   // (the built-in sky where even that is missing, an image background), without a warning.
   this->ForEachIceMapper([](vtkIceMapper* m) { m->WarnWithoutEnvironmentOff(); });
+  // One look for both: the LOD mapper draws the same ice while interacting.
+  static_cast<vtkIceMapper*>(this->LODMapper)->SetIceProperty(this->GetIceProperty());
   this->SetupDefaults();
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   this->Distributed = controller && controller->GetNumberOfProcesses() > 1;
@@ -152,47 +155,60 @@ int vtkIceRepresentation::ProcessViewRequest(
 }
 
 //------------------------------------------------------------------------------
-// Each ice property goes to both mappers; `value` converted as the mapper's setter takes it.
-#define vtkIceForwardMacro(name, type, value)                                                      \
+vtkIceProperty* vtkIceRepresentation::GetIceProperty()
+{
+  return this->GetIceMapper()->GetIceProperty();
+}
+
+//------------------------------------------------------------------------------
+// A look parameter goes to the mappers' shared ice property, a drawing setting to both mappers;
+// `value` converted as the setter takes it.
+#define vtkIceLookMacro(name, type, value)                                                         \
+  void vtkIceRepresentation::Set##name(type v)                                                     \
+  {                                                                                                \
+    this->GetIceProperty()->Set##name(value);                                                      \
+  }
+#define vtkIceDrawingMacro(name, type, value)                                                      \
   void vtkIceRepresentation::Set##name(type v)                                                     \
   {                                                                                                \
     this->ForEachIceMapper([v](vtkIceMapper* m) { m->Set##name(value); });                         \
   }
 
-vtkIceForwardMacro(IndexOfRefraction, double, v);
-vtkIceForwardMacro(FresnelPower, double, v);
-vtkIceForwardMacro(BackNormalWeight, double, v);
-vtkIceForwardMacro(TwoSidedRefraction, int, v != 0);
-vtkIceForwardMacro(NumberOfCracks, int, v);
-vtkIceForwardMacro(CrackSeed, int, v);
-vtkIceForwardMacro(CrackIntensity, double, v);
-vtkIceForwardMacro(CrackClipping, int, v);
-vtkIceForwardMacro(NumberOfAirPlanes, int, v);
-vtkIceForwardMacro(AirSeed, int, v);
-vtkIceForwardMacro(Milkiness, double, v);
-vtkIceForwardMacro(MilkyCoreRadius, double, v);
+vtkIceLookMacro(IndexOfRefraction, double, v);
+vtkIceLookMacro(FresnelPower, double, v);
+vtkIceLookMacro(BackNormalWeight, double, v);
+vtkIceDrawingMacro(TwoSidedRefraction, int, v != 0);
+vtkIceLookMacro(NumberOfCracks, int, v);
+vtkIceLookMacro(CrackSeed, int, v);
+vtkIceLookMacro(CrackIntensity, double, v);
+vtkIceDrawingMacro(CrackClipping, int, v);
+vtkIceLookMacro(NumberOfAirPlanes, int, v);
+vtkIceLookMacro(AirSeed, int, v);
+vtkIceLookMacro(Milkiness, double, v);
+vtkIceLookMacro(MilkyCoreRadius, double, v);
 // "Roughness" is ParaView's physically based lighting's (vtkGeometryRepresentation::SetRoughness).
 void vtkIceRepresentation::SetIceRoughness(double v)
 {
-  this->ForEachIceMapper([v](vtkIceMapper* m) { m->SetRoughness(v); });
+  this->GetIceProperty()->SetRoughness(v);
 }
-vtkIceForwardMacro(CrackReflection, double, v);
-vtkIceForwardMacro(BumpStrength, double, v);
-vtkIceForwardMacro(BumpScale, double, v);
-vtkIceForwardMacro(Glistening, int, v != 0);
-vtkIceForwardMacro(GlisteningIntensity, double, v);
-vtkIceForwardMacro(SnowAmount, double, v);
-vtkIceForwardMacro(InteriorMethod, int, v);
-#undef vtkIceForwardMacro
+vtkIceLookMacro(CrackReflection, double, v);
+vtkIceLookMacro(BumpStrength, double, v);
+vtkIceLookMacro(BumpScale, double, v);
+vtkIceLookMacro(Glistening, int, v != 0);
+vtkIceLookMacro(GlisteningIntensity, double, v);
+vtkIceLookMacro(SnowAmount, double, v);
+vtkIceDrawingMacro(InteriorMethod, int, v);
+#undef vtkIceLookMacro
+#undef vtkIceDrawingMacro
 
 void vtkIceRepresentation::SetIceColor(double red, double green, double blue)
 {
-  this->ForEachIceMapper([=](vtkIceMapper* m) { m->SetIceColor(red, green, blue); });
+  this->GetIceProperty()->SetIceColor(red, green, blue);
 }
 
 void vtkIceRepresentation::SetAttenuationColor(double red, double green, double blue)
 {
-  this->ForEachIceMapper([=](vtkIceMapper* m) { m->SetAttenuationColor(red, green, blue); });
+  this->GetIceProperty()->SetAttenuationColor(red, green, blue);
 }
 
 //------------------------------------------------------------------------------
@@ -214,7 +230,7 @@ void vtkIceRepresentation::PushAttenuationDistance()
 {
   const double distance =
     this->Absorption ? this->AttenuationDistance : std::numeric_limits<double>::infinity();
-  this->ForEachIceMapper([distance](vtkIceMapper* m) { m->SetAttenuationDistance(distance); });
+  this->GetIceProperty()->SetAttenuationDistance(distance);
 }
 
 //------------------------------------------------------------------------------

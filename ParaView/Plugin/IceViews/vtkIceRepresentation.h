@@ -33,6 +33,7 @@
 
 class vtkCompositeDataGeometryFilter;
 class vtkIceMapper;
+class vtkIceProperty;
 class vtkIceRedistributeObjects;
 class vtkPVIceBackgroundEnvironment;
 
@@ -45,7 +46,8 @@ public:
 
   ///@{
   /**
-   * Forwarded to both vtkIceMappers (see vtkIceMapper for meanings and ranges).
+   * The look's parameters, set on the ice property both mappers share (see vtkIceProperty for
+   * meanings and ranges); TwoSidedRefraction, CrackClipping and InteriorMethod on both mappers.
    */
   void SetIndexOfRefraction(double value);
   void SetFresnelPower(double value);
@@ -85,6 +87,11 @@ public:
    * The ice mapper used when not interacting (for tests and scripts).
    */
   vtkIceMapper* GetIceMapper();
+
+  /**
+   * The ice property both mappers share.
+   */
+  vtkIceProperty* GetIceProperty();
 
   int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
     vtkInformation* outInfo) override;
