@@ -69,6 +69,34 @@ Image Capture(vtkRenderWindow* window)
   return FromImageData(grab->GetOutput());
 }
 
+int RunCases(const char* test, int argc, char* argv[], const Cases& cases)
+{
+  std::string only;
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::string(argv[i]) == "--case")
+    {
+      only = argv[i + 1];
+    }
+  }
+  bool ok = true;
+  bool found = only.empty();
+  for (const auto& entry : cases)
+  {
+    if (only.empty() || only == entry.first)
+    {
+      found = true;
+      ok = entry.second() && ok;
+    }
+  }
+  if (!found)
+  {
+    std::cerr << test << ": no case '" << only << "'\n";
+    return EXIT_FAILURE;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int PixelDifference(const unsigned char* a, const unsigned char* b)
 {
   int worst = 0;

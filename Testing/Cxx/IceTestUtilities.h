@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkIceCubeMapSource;
@@ -36,6 +37,11 @@ Image Capture(vtkRenderWindow* window);
 
 // Prints "ok   WHAT" or "FAIL WHAT" and returns `condition`: the tests' one line per check.
 bool Expect(bool condition, const std::string& what);
+
+// A test of several behaviours, one per ctest test: runs the case named by `--case NAME` in
+// argv, or every case in turn without it. EXIT_SUCCESS when all run passed; an unknown name fails.
+using Cases = std::vector<std::pair<std::string, std::function<bool()>>>;
+int RunCases(const char* test, int argc, char* argv[], const Cases& cases);
 
 // Largest channel difference of two pixels, in 0..255.
 int PixelDifference(const unsigned char* a, const unsigned char* b);

@@ -654,7 +654,7 @@ bool Translucency(bool depthPeeling)
 // it, every case in turn.
 int TestIceLifecycle(int argc, char* argv[])
 {
-  const std::vector<std::pair<std::string, std::function<bool()>>> cases = {
+  const IceTest::Cases cases = {
     { "close-reopen-paper-passes",
       [] { return CloseAndReopen(vtkIceMapper::InteriorPaperPasses); } },
     { "close-reopen-single-pass", [] { return CloseAndReopen(vtkIceMapper::InteriorSinglePass); } },
@@ -667,28 +667,5 @@ int TestIceLifecycle(int argc, char* argv[])
     { "translucency-oit", [] { return Translucency(false); } },
     { "translucency-depth-peeling", [] { return Translucency(true); } },
   };
-  std::string only;
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::string(argv[i]) == "--case")
-    {
-      only = argv[i + 1];
-    }
-  }
-  bool ok = true;
-  bool found = only.empty();
-  for (const auto& entry : cases)
-  {
-    if (only.empty() || only == entry.first)
-    {
-      found = true;
-      ok = entry.second() && ok;
-    }
-  }
-  if (!found)
-  {
-    std::cerr << "TestIceLifecycle: no case '" << only << "'\n";
-    return EXIT_FAILURE;
-  }
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  return IceTest::RunCases("TestIceLifecycle", argc, argv, cases);
 }

@@ -1,0 +1,61 @@
+"""vtkice.vtkIceProperty from Python: the look as one object, shared between mappers, and the
+mapper's own setters of its parameters. No render window: the settings act on objects only.
+"""
+import sys
+
+import vtkice
+
+from ice_test_helpers import check, run_tests
+
+
+def test_mapper_has_a_property_with_the_defaults():
+    mapper = vtkice.vtkIceMapper()
+    look = mapper.GetIceProperty()
+    check(isinstance(look, vtkice.vtkIceProperty), "GetIceProperty returns a vtkIceProperty")
+    check(look.GetIndexOfRefraction() == 1.31 and look.GetNumberOfCracks() == 2 and
+          look.GetRoughness() == 0.0, "with the defaults")
+
+
+def test_mapper_setters_set_the_property():
+    mapper = vtkice.vtkIceMapper()
+    mapper.SetRoughness(0.25)
+    mapper.SetAttenuationColor(0.75, 0.9, 1.0)
+    look = mapper.GetIceProperty()
+    check(look.GetRoughness() == 0.25, "Roughness set through the mapper is the property's")
+    check(look.GetAttenuationColor() == (0.75, 0.9, 1.0), "a colour too")
+    look.SetMilkiness(0.8)
+    check(mapper.GetMilkiness() == 0.8, "the mapper reads the property's")
+
+
+def test_shared_property():
+    look = vtkice.vtkIceProperty()
+    first, second = vtkice.vtkIceMapper(), vtkice.vtkIceMapper()
+    first.SetIceProperty(look)
+    second.SetIceProperty(look)
+    before = second.GetMTime()
+    first.SetCrackReflection(0.9)
+    check(second.GetCrackReflection() == 0.9, "a change through one mapper shows in the other")
+    check(second.GetMTime() > before, "and modifies it")
+
+
+def test_none_restores_the_defaults():
+    mapper = vtkice.vtkIceMapper()
+    mapper.SetRoughness(1.0)
+    mapper.SetIceProperty(None)
+    check(mapper.GetIceProperty() is not None and mapper.GetRoughness() == 0.0,
+          "SetIceProperty(None) gives a property with the defaults")
+
+
+def test_nan_is_refused():
+    look = vtkice.vtkIceProperty()
+    look.GlobalWarningDisplayOff()
+    look.SetFresnelPower(float("nan"))
+    check(look.GetFresnelPower() == 3.0, "NaN is refused, the value kept")
+
+
+def main():
+    return run_tests(globals())
+
+
+if __name__ == "__main__":
+    sys.exit(main())
