@@ -8,7 +8,7 @@
 # <build>/Testing/Temporary/valgrind/memcheck.log and prints a summary; exit status 1 when a
 # definite leak or a memory error belongs to VTK Ice:
 # - a definite leak is VTK Ice's when, walking its allocation stack from the allocator
-#   upward, a frame of libRenderingIce, libIceHeadless or the test program comes before any
+#   upward, a frame of the project's libraries or the test program comes before any
 #   frame of the GL driver (Mesa's swrast_dri, libLLVM, libGLX_mesa, libEGL_mesa, libOSMesa):
 #   memory that the driver allocates for itself while VTK Ice calls GL is the driver's;
 # - a memory error is VTK Ice's when the first of its frames outside libc, the dynamic linker
@@ -52,7 +52,7 @@ echo "valgrind: $(($(date +%s) - start)) s; log $log"
 import re
 import sys
 
-ours = re.compile(r"libRenderingIce|libIceHeadless|IceCxxTests")
+ours = re.compile(r"libRenderingIce|libFiltersIce|libIOIce|libIceHeadless|IceCxxTests")
 driver = re.compile(r"swrast_dri|libLLVM|libGLX_mesa|libEGL_mesa|libOSMesa|libgallium")
 system = re.compile(r"vgpreload|libc\.so|ld-linux|libstdc\+\+|\(dl-|strcmp|rtld")
 records = []

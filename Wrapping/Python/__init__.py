@@ -15,7 +15,10 @@ if _vtkVersion.GetVTKVersion() != _BUILT_AGAINST:
         % (_BUILT_AGAINST, _vtkVersion.GetVTKVersion(), vtkmodules.__file__)
     )
 
+# One package for the project's modules, as VTK's own are one.
+from .FiltersIce import *  # noqa: F401,F403,E402
 from .RenderingIce import *  # noqa: F401,F403,E402
+from .IOIce import *  # noqa: F401,F403,E402
 
 
 def use_backend(name="auto"):

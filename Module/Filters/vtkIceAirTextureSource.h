@@ -11,10 +11,10 @@
 #ifndef vtkIceAirTextureSource_h
 #define vtkIceAirTextureSource_h
 
-#include "RenderingIceModule.h" // for export macro
+#include "FiltersIceModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
-class RENDERINGICE_EXPORT vtkIceAirTextureSource : public vtkImageAlgorithm
+class FILTERSICE_EXPORT vtkIceAirTextureSource : public vtkImageAlgorithm
 {
 public:
   static vtkIceAirTextureSource* New();

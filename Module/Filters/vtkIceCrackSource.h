@@ -11,10 +11,10 @@
 #ifndef vtkIceCrackSource_h
 #define vtkIceCrackSource_h
 
-#include "RenderingIceModule.h" // for export macro
+#include "FiltersIceModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class RENDERINGICE_EXPORT vtkIceCrackSource : public vtkPolyDataAlgorithm
+class FILTERSICE_EXPORT vtkIceCrackSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkIceCrackSource* New();

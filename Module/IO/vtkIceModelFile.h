@@ -14,12 +14,12 @@
 #ifndef vtkIceModelFile_h
 #define vtkIceModelFile_h
 
-#include "RenderingIceModule.h" // For export macro
+#include "IOIceModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <string> // For std::string
 
-class RENDERINGICE_EXPORT vtkIceModelFile : public vtkObject
+class IOICE_EXPORT vtkIceModelFile : public vtkObject
 {
 public:
   static vtkIceModelFile* New();

@@ -17,10 +17,10 @@
 #ifndef vtkIceTeapotSource_h
 #define vtkIceTeapotSource_h
 
-#include "RenderingIceModule.h" // For export macro
+#include "FiltersIceModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class RENDERINGICE_EXPORT vtkIceTeapotSource : public vtkPolyDataAlgorithm
+class FILTERSICE_EXPORT vtkIceTeapotSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkIceTeapotSource* New();

@@ -6,7 +6,7 @@
 #ifndef vtkIceModelFileChecks_h
 #define vtkIceModelFileChecks_h
 
-#include "RenderingIceModule.h" // For export macro
+#include "IOIceModule.h" // For export macro
 
 #include <cstddef>
 #include <string>
@@ -15,21 +15,21 @@ namespace IceModelFile
 {
 // Whether `path` is a binary or ASCII STL file whose size and end agree with its header.
 // Returns "" or the problem in one sentence.
-RENDERINGICE_EXPORT std::string CheckSTL(const std::string& path);
+IOICE_EXPORT std::string CheckSTL(const std::string& path);
 
 // Whether `path` is a PLY file (ASCII or binary, either byte order) whose header parses and whose
 // body holds every element the header declares, with face indices naming existing vertices.
 // Returns "" or the problem in one sentence.
-RENDERINGICE_EXPORT std::string CheckPLY(const std::string& path);
+IOICE_EXPORT std::string CheckPLY(const std::string& path);
 
 // Why the model file at `path` cannot be handed to a reader, or "": it must be a regular file (a
 // device such as /dev/zero or a pipe would never end), readable, and for the formats whose VTK
 // readers trust their headers (STL, PLY: by its extension), consistent with them.
-RENDERINGICE_EXPORT std::string CheckFile(const std::string& path);
+IOICE_EXPORT std::string CheckFile(const std::string& path);
 
 // `text` safe for a terminal: control characters and bytes that are not valid UTF-8 become '?';
 // at most about `limit` bytes (then "...").
-RENDERINGICE_EXPORT std::string Printable(const std::string& text, std::size_t limit = 240);
+IOICE_EXPORT std::string Printable(const std::string& text, std::size_t limit = 240);
 }
 
 #endif // vtkIceModelFileChecks_h

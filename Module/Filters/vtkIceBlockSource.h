@@ -14,10 +14,10 @@
 #ifndef vtkIceBlockSource_h
 #define vtkIceBlockSource_h
 
-#include "RenderingIceModule.h" // For export macro
+#include "FiltersIceModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class RENDERINGICE_EXPORT vtkIceBlockSource : public vtkPolyDataAlgorithm
+class FILTERSICE_EXPORT vtkIceBlockSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkIceBlockSource* New();

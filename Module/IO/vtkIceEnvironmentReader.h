@@ -52,12 +52,12 @@
 #ifndef vtkIceEnvironmentReader_h
 #define vtkIceEnvironmentReader_h
 
-#include "RenderingIceModule.h" // for export macro
+#include "IOIceModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
 class vtkTexture;
 
-class RENDERINGICE_EXPORT vtkIceEnvironmentReader : public vtkImageAlgorithm
+class IOICE_EXPORT vtkIceEnvironmentReader : public vtkImageAlgorithm
 {
 public:
   static vtkIceEnvironmentReader* New();
