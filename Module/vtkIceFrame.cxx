@@ -1,4 +1,5 @@
 #include "vtkIceFrame.h"
+#include "vtkIceRenderPasses.h"
 
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseKey.h"
@@ -60,4 +61,57 @@ vtkIceFrame* vtkIceFrame::Of(vtkProp* prop)
 vtkTextureObject* vtkIceFrame::CubeMapOf(vtkProp* prop) const
 {
   return this->IceState && this->CubeMaps ? this->CubeMaps(prop) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkIceFrame::InputsOf(vtkProp* prop, int needs, bool exitPoint, bool depthDebug) const
+{
+  // The sub-passes that draw the ice (by name: they use the frame) replace its output: the
+  // surface's optics would be dead code in their programs, which NVIDIA's driver still compiled
+  // with the textures' samplers active (Mesa drops them).
+  const bool inSubPass = vtkIceRenderPasses::Find(prop, [](vtkObjectBase* pass) {
+    return pass->IsA("vtkIceDepthIntervalPass") || pass->IsA("vtkIceBackfaceNormalPass");
+  }) != nullptr;
+  if (!this->Active() || inSubPass)
+  {
+    return 0;
+  }
+  int inputs = 0;
+  if (this->BackfaceNormals)
+  {
+    if (needs & NeedsBackfaceNormals)
+    {
+      inputs |= exitPoint ? ExitPointInput : TwoSidedInput;
+    }
+    inputs |= (needs & NeedsPathLength) ? PathLengthInput : 0;
+    inputs |= (needs & NeedsBackDepthForInterior) ? InteriorInput : 0;
+    inputs |= inputs ? BackNormalsInput : 0;
+  }
+  if (this->DepthInterval && depthDebug)
+  {
+    inputs |= DepthDebugInput;
+  }
+  return inputs;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceFrame::Defines(int inputs)
+{
+  static const std::pair<int, const char*> names[] = {
+    { BackNormalsInput, "ICE_FRAME_BACK_NORMALS" },
+    { TwoSidedInput, "ICE_FRAME_TWO_SIDED" },
+    { ExitPointInput, "ICE_FRAME_EXIT_POINT" },
+    { PathLengthInput, "ICE_FRAME_PATH_LENGTH" },
+    { InteriorInput, "ICE_FRAME_INTERIOR" },
+    { DepthDebugInput, "ICE_FRAME_DEPTH_DEBUG" },
+  };
+  std::string defines;
+  for (const auto& name : names)
+  {
+    if (inputs & name.first)
+    {
+      defines += std::string("#define ") + name.second + "\n";
+    }
+  }
+  return defines;
 }

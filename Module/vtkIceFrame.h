@@ -10,6 +10,7 @@
 #include "vtkObject.h"
 
 #include <functional>
+#include <string>
 
 class vtkInformationObjectBaseKey;
 class vtkProp;
@@ -32,6 +33,26 @@ public:
     NeedsBackDepthForInterior = 8,     // the back-face target's depth (InteriorSinglePass)
     NeedsPathLength = 16               // the back-face target's depth (absorption)
   };
+
+  // What the frame gives the surface program of an ice prop, from the textures it has ready now:
+  // published to the program as #defines (Defines), which the surface's code for each tests,
+  // and read by the mapper for the uniforms that go with them. The contract between the pass and
+  // the surface's shaders; nothing else of the frame enters a program.
+  enum Input
+  {
+    BackNormalsInput = 1, // ICE_FRAME_BACK_NORMALS: the back-face target (sampler iceBackNormals)
+    TwoSidedInput = 2,    // ICE_FRAME_TWO_SIDED: the blended refraction normal (eq 1)
+    ExitPointInput = 4,   // ICE_FRAME_EXIT_POINT: refraction again at the exit point
+    PathLengthInput = 8,  // ICE_FRAME_PATH_LENGTH: the path in the ice, for absorption
+    InteriorInput = 16,   // ICE_FRAME_INTERIOR: the single-pass interior, up to the back depth
+    DepthDebugInput = 32  // ICE_FRAME_DEPTH_DEBUG: the depth interval shown (debug views)
+  };
+  // The inputs of `prop`'s surface program now, for a prop with `needs` (Need bits) whose
+  // two-sided refraction goes through the exit point (`exitPoint`) and which shows a depth debug
+  // view (`depthDebug`): none outside the frame or while a sub-pass of the pass draws the prop.
+  int InputsOf(vtkProp* prop, int needs, bool exitPoint, bool depthDebug) const;
+  // The #define lines of `inputs`.
+  static std::string Defines(int inputs);
 
   // Publishes the frame on the props of `iceState` (their property keys) until End.
   void Begin(const vtkRenderState* iceState, int needs);

@@ -1,7 +1,10 @@
 #include "vtkIceMapper.h"
 
 #include "vtkIceBackfaceCulling.h"
+#include "vtkIceBackNormalsFS.h"
 #include "vtkIceBumpFS.h"
+#include "vtkIceDebugDepthFS.h"
+#include "vtkIceExitPointFS.h"
 #include "vtkIceFrame.h"
 #include "vtkIceGlistening.h"
 #include "vtkIceGlisteningTexture.h"
@@ -16,6 +19,7 @@
 #include "vtkIceSurfaceCheck.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
+#include "vtkIceTwoSidedFS.h"
 #include "vtkIceNormalMapFS.h"
 #include "vtkIceValueNoise.h"
 
@@ -174,6 +178,17 @@ int vtkIceMapper::GetFrameNeeds()
 }
 
 //------------------------------------------------------------------------------
+int vtkIceMapper::GetFrameInputs(vtkProp* prop)
+{
+  vtkIceFrame* frame = vtkIceFrame::Of(prop);
+  const int view = this->DebugView;
+  return frame
+    ? frame->InputsOf(prop, this->GetFrameNeeds(), this->TwoSidedMethod == TwoSidedExitPoint,
+        view == DebugFrontDepth || view == DebugBackDepth)
+    : 0;
+}
+
+//------------------------------------------------------------------------------
 int vtkIceMapper::ShaderVariant() const
 {
   int variant = 0;
@@ -212,6 +227,7 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   // The frame of vtkIcePass drawing this ice now, if any.
   vtkIceFrame* frame = vtkIceFrame::Of(act);
+  this->ActiveFrameInputs = this->GetFrameInputs(act);
   if (this->HelpersSawPass && !frame)
   {
     // The pass is gone from this ice: its cracks and air, drawn only by it, let it go.
@@ -327,6 +343,8 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   const int variant = this->ShaderVariant();
   this->ShaderVariantBuilt[this->LastBoundBO] = variant;
 
+  // What vtkIcePass's frame gives the program, as #defines (vtkIceFrame::Defines).
+  parts.FragmentDeclarations += "//ICEHOOK::FrameInputs\n";
   parts.VertexDeclarations += optics + Get(vtkIceSurfaceVS, "Dec");
   parts.VertexImpl += Get(vtkIceSurfaceVS, "Impl");
   if (variant & RoughPart)
@@ -369,6 +387,7 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
     parts.FragmentFunctions += vtkIceSinglePassInterior::Functions(
       lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount);
   }
+  this->AddFrameInputParts(parts, variant & InteriorPart);
   if (this->DrawingEdges(ren, act))
   {
     // VTK's edge code (before the lighting) weighs edge pixels by emix; the ice colour replaces
@@ -376,6 +395,41 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
     parts.Hooks.emplace_back(
       "Edges", "gl_FragData[0].rgb = mix(gl_FragData[0].rgb, edgeColor, emix);");
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::AddFrameInputParts(vtkIceShaderParts& parts, bool interior)
+{
+  // Each compiled where vtkIcePass's frame defines its input (vtkIceFrame::Input), after the
+  // surface's own functions; the back-face target's sampler declared once, before what samples it.
+  using vtkIceShaderSections::Get;
+  auto guarded = [](const char* input, const std::string& code) {
+    return std::string("\n#ifdef ") + input + "\n" + code + "\n#endif\n";
+  };
+  parts.FragmentFunctions += guarded("ICE_FRAME_BACK_NORMALS", Get(vtkIceBackNormalsFS, "Dec")) +
+    guarded("ICE_FRAME_EXIT_POINT", Get(vtkIceExitPointFS, "Dec")) +
+    guarded("ICE_FRAME_TWO_SIDED", Get(vtkIceTwoSidedFS, "Dec")) +
+    guarded("ICE_FRAME_DEPTH_DEBUG", Get(vtkIceDebugDepthFS, "Dec"));
+  parts.Hooks.emplace_back(
+    "RefractionNormal", guarded("ICE_FRAME_TWO_SIDED", Get(vtkIceTwoSidedFS, "Impl")));
+  parts.Hooks.emplace_back(
+    "RefractionDirection", guarded("ICE_FRAME_EXIT_POINT", Get(vtkIceExitPointFS, "Impl")));
+  // The exit point's own path; else the eye ray's between the front and back faces.
+  parts.Hooks.emplace_back("PathLength",
+    guarded("ICE_FRAME_PATH_LENGTH",
+      "#ifdef ICE_FRAME_EXIT_POINT\n"
+      "    icePathLength = iceExitPathLength;\n"
+      "#else\n"
+      "    icePathLength = iceEyePathLength(e, iceViewDirectionWC, iceViewDepth(),\n"
+      "      texelFetch(iceBackNormals, iceScreenTexel(), 0).a);\n"
+      "#endif"));
+  if (interior)
+  {
+    parts.Hooks.emplace_back(
+      "Interior", guarded("ICE_FRAME_INTERIOR", vtkIceSinglePassInterior::Call()));
+  }
+  parts.Hooks.emplace_back(
+    "Debug", guarded("ICE_FRAME_DEPTH_DEBUG", Get(vtkIceDebugDepthFS, "Impl")));
 }
 
 //------------------------------------------------------------------------------
@@ -438,8 +492,8 @@ void vtkIceMapper::SetIceShaderParameters(
     parameters.NoiseTextureUnit = noise->GetTextureUnit();
     vtkIceGlistening::SetUniforms(program, parameters);
   }
-  // The single-pass interior, where vtkIcePass has filled its call.
-  if (program->IsUniformUsed("iceInteriorTable"))
+  // The single-pass interior, where the frame gives the back depth.
+  if (this->ActiveFrameInputs & vtkIceFrame::InteriorInput)
   {
     if (!this->SinglePassPrepared)
     {

@@ -437,6 +437,9 @@ protected:
   // this ice needs rendered for it (vtkIceFrame::Need bits), its cracks and its air drawn.
   friend class vtkIceMapperAccess;
   int GetFrameNeeds();
+  // What the frame drawing `prop` gives its surface program now (vtkIceFrame::Input bits).
+  int GetFrameInputs(vtkProp* prop);
+  int ActiveFrameInputs = 0; // during a draw
   void RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
   void RenderAir(vtkRenderer* ren, vtkActor* actor);
 
@@ -445,6 +448,10 @@ protected:
   void AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren, vtkActor* act) override;
   void SetIceShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  // The parts that use what vtkIcePass's frame gives (vtkIceFrame::Input), each compiled where
+  // the frame defines it; `interior`: the single-pass interior's call too.
+  void AddFrameInputParts(vtkIceShaderParts& parts, bool interior);
 
   // Which optional shader parts of the mapper's own the next build includes (bumps, glistening;
   // vtkIcePass adds the parts that sample its textures).

@@ -21,6 +21,12 @@ public:
   // What the ice needs the pass to render for it this frame: vtkIceFrame::Need bits.
   static int FrameNeeds(vtkIceMapper* mapper) { return mapper->GetFrameNeeds(); }
 
+  // What the frame gives the surface program of `prop` now (vtkIceFrame::Input bits).
+  static int FrameInputs(vtkIceMapper* mapper, vtkProp* prop)
+  {
+    return mapper->GetFrameInputs(prop);
+  }
+
   // Draws the cracks of `actor`. `overlay`: over the rendered scene, with additive blending;
   // otherwise with the current state (into the back-face normal texture).
   static void DrawCracks(vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, bool overlay)

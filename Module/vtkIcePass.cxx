@@ -1,11 +1,8 @@
 #include "vtkIcePass.h"
 
-#include "vtkIceBackNormalsFS.h"
 #include "vtkIceBackfaceNormalPass.h"
 #include "vtkIceCubeMapPass.h"
-#include "vtkIceDebugDepthFS.h"
 #include "vtkIceDepthIntervalPass.h"
-#include "vtkIceExitPointFS.h"
 #include "vtkIceFrame.h"
 #include "vtkIceMapper.h"
 #include "vtkIceMapperAccess.h"
@@ -13,9 +10,7 @@
 #include "vtkIceRendererSteps.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
-#include "vtkIceSinglePassInterior.h"
 #include "vtkIceStepTimers.h"
-#include "vtkIceTwoSidedFS.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -82,16 +77,6 @@ vtkPropCollection* PickFromProps(vtkRenderer* renderer)
   return renderer->*vtkIcePickListAccess::Member();
 }
 
-// The sub-passes draw the ice with outputs of their own: the surface's optics would be dead code
-// in their programs, which NVIDIA's driver still compiled with the textures' samplers active
-// (Mesa drops them).
-bool DrawnByIceSubPass(vtkProp* prop)
-{
-  return vtkIceRenderPasses::Find(prop, [](vtkObjectBase* pass) {
-    return vtkIceDepthIntervalPass::SafeDownCast(pass) ||
-      vtkIceBackfaceNormalPass::SafeDownCast(pass);
-  }) != nullptr;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -386,56 +371,15 @@ void vtkIcePass::RenderDepthInterval(const vtkRenderState* s)
 bool vtkIcePass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fs, vtkAbstractMapper* abstractMapper, vtkProp* prop)
 {
-  // The surface's hooks for the parts that sample this pass's textures, filled when the texture
-  // is ready (not while a sub-pass renders it) and the ice needs it. What is ready in a stage is
-  // the same every frame, and a change of needs modifies the mapper: the program is rebuilt
-  // whenever this answer changes.
+  // The surface's code for each of the frame's inputs is in its program; the pass publishes
+  // which inputs it has (textures ready in this stage, not while a sub-pass renders them, and
+  // needed by the ice) as #defines. What is ready in a stage is the same every frame, and a
+  // change of needs modifies the mapper: the program is rebuilt whenever the answer changes.
   vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(abstractMapper);
-  if (!mapper || !this->Frame->Active() || DrawnByIceSubPass(prop))
+  if (mapper)
   {
-    return true;
-  }
-  using vtkIceShaderSections::Get;
-  const int needs = vtkIceMapperAccess::FrameNeeds(mapper);
-  vtkTextureObject* backfaceNormals = this->Frame->BackfaceNormals;
-  // The back-face target's sampler, declared once before the parts below that sample it.
-  if (backfaceNormals &&
-    (needs &
-      (vtkIceFrame::NeedsBackfaceNormals | vtkIceFrame::NeedsPathLength |
-        vtkIceFrame::NeedsBackDepthForInterior)))
-  {
-    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceBackNormalsFS, "Dec"));
-  }
-  const bool exitPoint = backfaceNormals && (needs & vtkIceFrame::NeedsBackfaceNormals) &&
-    mapper->GetTwoSidedMethod() == vtkIceMapper::TwoSidedExitPoint;
-  if (exitPoint)
-  {
-    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceExitPointFS, "Dec"));
-    vtkIceShaderSections::FillHook(fs, "RefractionDirection", Get(vtkIceExitPointFS, "Impl"));
-  }
-  else if (backfaceNormals && (needs & vtkIceFrame::NeedsBackfaceNormals))
-  {
-    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceTwoSidedFS, "Dec"));
-    vtkIceShaderSections::FillHook(fs, "RefractionNormal", Get(vtkIceTwoSidedFS, "Impl"));
-  }
-  if (backfaceNormals && (needs & vtkIceFrame::NeedsPathLength))
-  {
-    // The exit point's own path; else the eye ray's between the front and back faces.
-    vtkIceShaderSections::FillHook(fs, "PathLength",
-      exitPoint ? "icePathLength = iceExitPathLength;"
-                : "icePathLength = iceEyePathLength(e, iceViewDirectionWC, iceViewDepth(),\n"
-                  "      texelFetch(iceBackNormals, iceScreenTexel(), 0).a);");
-  }
-  if (backfaceNormals && (needs & vtkIceFrame::NeedsBackDepthForInterior))
-  {
-    vtkIceShaderSections::FillHook(fs, "Interior", vtkIceSinglePassInterior::Call());
-  }
-  const int view = mapper->GetDebugView();
-  if (this->Frame->DepthInterval &&
-    (view == vtkIceMapper::DebugFrontDepth || view == vtkIceMapper::DebugBackDepth))
-  {
-    vtkIceShaderSections::InsertDeclarations(fs, Get(vtkIceDebugDepthFS, "Dec"));
-    vtkIceShaderSections::FillHook(fs, "Debug", Get(vtkIceDebugDepthFS, "Impl"));
+    vtkIceShaderSections::FillHook(
+      fs, "FrameInputs", vtkIceFrame::Defines(vtkIceMapperAccess::FrameInputs(mapper, prop)));
   }
   return true;
 }

@@ -1,5 +1,5 @@
 //ICE::Dec
 // The back-face target of vtkIceBackfaceNormalPass, handed over by vtkIcePass: RGB the nearest
-// back face's world normal, A its view depth (0: no ice). Declared here only; vtkIcePass inserts
-// it before every part it fills that samples it.
+// back face's world normal, A its view depth (0: no ice). Declared here only; compiled where the
+// frame defines ICE_FRAME_BACK_NORMALS, before every part that samples it (vtkIceMapper).
 uniform sampler2D iceBackNormals;

@@ -231,12 +231,14 @@ bool PassHoldsTheFrame()
       subPass = subPass || !vtkIcePass::SafeDownCast(pass);
     }
     // The source, not only the active uniforms: Mesa drops a sampler whose result is unused,
-    // NVIDIA's driver kept it (the depth-interval program sampled the back normals there).
+    // NVIDIA's driver kept it (the depth-interval program sampled the back normals there). The
+    // surface's code for the frame's inputs is in every program, compiled only where the frame
+    // defines its input (vtkIceFrame::Defines): a sub-pass's program must define none.
     const bool declaring =
-      program->GetFragmentShader()->GetSource().find("iceBackNormals") != std::string::npos;
+      program->GetFragmentShader()->GetSource().find("#define ICE_FRAME_") != std::string::npos;
     observation->SubPassDeclaring += subPass && declaring;
     observation->Log += "     program " + std::to_string(program->GetHandle()) +
-      (sampling ? " samples iceBackNormals" : (declaring ? " names iceBackNormals" : "")) +
+      (sampling ? " samples iceBackNormals" : (declaring ? " defines a frame input" : "")) +
       "; passes:" + passes + "\n";
   });
   scene.Mapper->AddObserver(vtkCommand::UpdateShaderEvent, observer);
@@ -254,8 +256,8 @@ bool PassHoldsTheFrame()
            std::to_string(seen.SamplingBackNormals) + " bound") &&
     ok;
   ok = Expect(seen.SubPassDeclaring == 0,
-         "no program of a sub-pass carries the surface's back-face sampling (" +
-           std::to_string(seen.SubPassDeclaring) + " bound)") &&
+         "no program of a sub-pass defines a frame input (its back-face sampling compiled out): " +
+           std::to_string(seen.SubPassDeclaring) + " bound") &&
     ok;
   ok = Expect(!AmongRenderPasses(scene.Ice, scene.Pass),
          "after the frame the prop has no ice pass among its render passes") &&
