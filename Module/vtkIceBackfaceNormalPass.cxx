@@ -1,6 +1,7 @@
 #include "vtkIceBackfaceNormalPass.h"
 
 #include "vtkIceBackfaceNormalFS.h"
+#include "vtkIceInteriorDrawer.h"
 #include "vtkIceMapperAccess.h"
 #include "vtkIceScreenTarget.h"
 #include "vtkIceShaderSections.h"
@@ -55,7 +56,7 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
     vtkProp* prop = s->GetPropArray()[i];
     if (vtkIceMapper* mapper = vtkIceMapperAccess::Of(prop))
     {
-      vtkIceMapperAccess::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), false);
+      vtkIceInteriorDrawer::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), false);
     }
   }
   this->PostRender(s);

@@ -610,57 +610,6 @@ int vtkIceMapper::UsableCrackClipping()
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
-{
-  const bool debugCracks =
-    this->DebugView == DebugCracksUnclipped || this->DebugView == DebugCracksClipped;
-  const bool otherDebug = this->DebugView == DebugFrontDepth || this->DebugView == DebugBackDepth ||
-    this->DebugView == DebugAir;
-  if (otherDebug || (!overlay && (!this->CracksPerturbRefraction || debugCracks)) ||
-    (overlay && this->UsesSinglePassInterior()))
-  {
-    return;
-  }
-  vtkPolyData* geometry = this->GetCrackGeometry();
-  if (!geometry || geometry->GetNumberOfPolys() == 0)
-  {
-    return;
-  }
-  const bool unclipped = this->DebugView == DebugCracksUnclipped;
-  vtkIceInterior::CrackLook look;
-  look.ClipToInterval = this->UsableCrackClipping() == DepthInterval && !unclipped;
-  look.Debug = debugCracks;
-  look.Unclipped = unclipped;
-  look.Intensity = this->IceProperty->GetCrackIntensity();
-  look.BumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
-  this->HelpersSawPass = true;
-  this->Interior->DrawCracks(ren, actor, look, overlay);
-  ++this->NumberOfCrackDraws;
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::RenderAir(vtkRenderer* ren, vtkActor* actor)
-{
-  const bool debugAir = this->DebugView == DebugAir;
-  if (this->IceProperty->GetNumberOfAirPlanes() == 0 ||
-    (this->DebugView != DebugOff && !debugAir) || this->UsesSinglePassInterior())
-  {
-    return;
-  }
-  vtkPolyData* input = this->GetInput();
-  if (!input || !this->PrepareInput(input))
-  {
-    return;
-  }
-  this->HelpersSawPass = true;
-  double bounds[6];
-  this->GetLookBounds(bounds);
-  this->Interior->DrawAir(ren, actor, this->PreparedInput, bounds,
-    this->IceProperty->GetNumberOfAirPlanes(), this->IceProperty->GetAirSeed(),
-    this->IceProperty->GetMilkiness(), debugAir);
-}
-
-//------------------------------------------------------------------------------
 void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Environment->ReleaseGraphicsResources(win);

@@ -434,14 +434,14 @@ protected:
   ~vtkIceMapper() override;
 
   // What vtkIcePass asks of the mapper in a frame (vtkIceMapperAccess, inside the module): what
-  // this ice needs rendered for it (vtkIceFrame::Need bits), its cracks and its air drawn.
+  // this ice needs rendered for it (vtkIceFrame::Need bits) and what the frame gives its program;
+  // its cracks and air are drawn by vtkIceInteriorDrawer from its state.
   friend class vtkIceMapperAccess;
+  friend class vtkIceInteriorDrawer;
   int GetFrameNeeds();
   // What the frame drawing `prop` gives its surface program now (vtkIceFrame::Input bits).
   int GetFrameInputs(vtkProp* prop);
   int ActiveFrameInputs = 0; // during a draw
-  void RenderCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
-  void RenderAir(vtkRenderer* ren, vtkActor* actor);
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;

@@ -1,5 +1,6 @@
 // What vtkIcePass and its sub-passes ask of the ice mappers in a frame: which props are ice, what
-// each needs rendered, and its cracks and air drawn. These are not vtkIceMapper's public API
+// each needs rendered and what the frame gives its program (its cracks and air:
+// vtkIceInteriorDrawer). These are not vtkIceMapper's public API
 // (neither wrapped nor installed): the mapper grants them to this class only. Inside the module.
 #ifndef vtkIceMapperAccess_h
 #define vtkIceMapperAccess_h
@@ -25,19 +26,6 @@ public:
   static int FrameInputs(vtkIceMapper* mapper, vtkProp* prop)
   {
     return mapper->GetFrameInputs(prop);
-  }
-
-  // Draws the cracks of `actor`. `overlay`: over the rendered scene, with additive blending;
-  // otherwise with the current state (into the back-face normal texture).
-  static void DrawCracks(vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, bool overlay)
-  {
-    mapper->RenderCracks(ren, actor, overlay);
-  }
-
-  // Draws the air planes of `actor` over the rendered scene, back to front for the camera.
-  static void DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor)
-  {
-    mapper->RenderAir(ren, actor);
   }
 };
 

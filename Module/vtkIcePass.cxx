@@ -5,6 +5,7 @@
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceFrame.h"
 #include "vtkIceMapper.h"
+#include "vtkIceInteriorDrawer.h"
 #include "vtkIceMapperAccess.h"
 #include "vtkIceRenderPasses.h"
 #include "vtkIceRendererSteps.h"
@@ -319,9 +320,9 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
     propState.SetFrameBuffer(s->GetFrameBuffer());
     this->RenderDepthInterval(&propState);
     scissorToIce(prop, false);
-    vtkIceMapperAccess::DrawAir(mapper, renderer, static_cast<vtkActor*>(prop));
+    vtkIceInteriorDrawer::DrawAir(mapper, renderer, static_cast<vtkActor*>(prop));
     scissorToIce(prop, mapper->GetDebugView() == vtkIceMapper::DebugCracksUnclipped);
-    vtkIceMapperAccess::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), true);
+    vtkIceInteriorDrawer::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), true);
   }
   if (interior)
   {

@@ -1,0 +1,24 @@
+// Draws an ice prop's cracks and air planes as separate geometry for vtkIcePass and its back-face
+// sub-pass: the paper's passes, the crack and air debug views, cracks in the back-face normals.
+// What to draw is the prop's mapper's (its debug view, interior method, look and input); the
+// drawing is its vtkIceInterior's. Not the mapper's public API, neither wrapped nor installed:
+// the mapper grants its state to this class. Inside the module.
+#ifndef vtkIceInteriorDrawer_h
+#define vtkIceInteriorDrawer_h
+
+class vtkActor;
+class vtkIceMapper;
+class vtkRenderer;
+
+class vtkIceInteriorDrawer
+{
+public:
+  // The cracks of `actor`. `overlay`: over the rendered scene, with additive blending; otherwise
+  // with the current state (into the back-face normal texture, CracksPerturbRefraction).
+  static void DrawCracks(vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, bool overlay);
+
+  // The air planes of `actor` over the rendered scene, back to front for the camera.
+  static void DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor);
+};
+
+#endif
