@@ -36,8 +36,6 @@
 
 #include <algorithm>
 #include <vector>
-#include <cmath>
-#include <limits>
 
 vtkStandardNewMacro(vtkIceMapper);
 
