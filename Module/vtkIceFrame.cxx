@@ -36,6 +36,7 @@ void vtkIceFrame::End()
   this->BoundCubeMap = nullptr;
   this->BackfaceNormals = nullptr;
   this->DepthInterval = nullptr;
+  this->ScreenInterior = nullptr;
   this->CubeMaps = nullptr;
   if (this->IceState)
   {
@@ -64,6 +65,20 @@ vtkTextureObject* vtkIceFrame::CubeMapOf(vtkProp* prop) const
 }
 
 //------------------------------------------------------------------------------
+void vtkIceFrame::BindCubeMap(vtkShaderProgram* program, vtkProp* prop)
+{
+  if (vtkTextureObject* cubeMap = this->CubeMapOf(prop))
+  {
+    if (this->BoundCubeMap && this->BoundCubeMap != cubeMap)
+    {
+      this->Textures.Release(this->BoundCubeMap);
+    }
+    this->BoundCubeMap = cubeMap;
+    this->Textures.Bind(program, "iceEnvironment", cubeMap);
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkIceFrame::InputsOf(vtkProp* prop, int needs, bool exitPoint, bool depthDebug) const
 {
   // The sub-passes that draw the ice (by name: they use the frame) replace its output: the
@@ -87,6 +102,10 @@ int vtkIceFrame::InputsOf(vtkProp* prop, int needs, bool exitPoint, bool depthDe
     inputs |= (needs & NeedsBackDepthForInterior) ? InteriorInput : 0;
     inputs |= inputs ? BackNormalsInput : 0;
   }
+  if (this->ScreenInterior && (needs & NeedsScreenInterior))
+  {
+    inputs |= ScreenInteriorInput;
+  }
   if (this->DepthInterval && depthDebug)
   {
     inputs |= DepthDebugInput;
@@ -104,6 +123,7 @@ std::string vtkIceFrame::Defines(int inputs)
     { PathLengthInput, "ICE_FRAME_PATH_LENGTH" },
     { InteriorInput, "ICE_FRAME_INTERIOR" },
     { DepthDebugInput, "ICE_FRAME_DEPTH_DEBUG" },
+    { ScreenInteriorInput, "ICE_FRAME_SCREEN_INTERIOR" },
   };
   std::string defines;
   for (const auto& name : names)

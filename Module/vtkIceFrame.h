@@ -15,6 +15,7 @@
 class vtkInformationObjectBaseKey;
 class vtkProp;
 class vtkRenderState;
+class vtkShaderProgram;
 class vtkTextureObject;
 
 class vtkIceFrame : public vtkObject
@@ -31,7 +32,8 @@ public:
     NeedsDepthIntervalBeforeScene = 2, // depth debug views; cracks in the back-face normals
     NeedsDepthIntervalForInterior = 4, // its own interval, right before its cracks and air
     NeedsBackDepthForInterior = 8,     // the back-face target's depth (InteriorSinglePass)
-    NeedsPathLength = 16               // the back-face target's depth (absorption)
+    NeedsPathLength = 16,              // the back-face target's depth (absorption)
+    NeedsScreenInterior = 32           // the screen-space interior step (InteriorScreenSpace)
   };
 
   // What the frame gives the surface program of an ice prop, from the textures it has ready now:
@@ -45,7 +47,8 @@ public:
     ExitPointInput = 4,   // ICE_FRAME_EXIT_POINT: refraction again at the exit point
     PathLengthInput = 8,  // ICE_FRAME_PATH_LENGTH: the path in the ice, for absorption
     InteriorInput = 16,   // ICE_FRAME_INTERIOR: the single-pass interior, up to the back depth
-    DepthDebugInput = 32  // ICE_FRAME_DEPTH_DEBUG: the depth interval shown (debug views)
+    DepthDebugInput = 32, // ICE_FRAME_DEPTH_DEBUG: the depth interval shown (debug views)
+    ScreenInteriorInput = 64 // ICE_FRAME_SCREEN_INTERIOR: the screen-space interior's result
   };
   // The inputs of `prop`'s surface program now, for a prop with `needs` (Need bits) whose
   // two-sided refraction goes through the exit point (`exitPoint`) and which shows a depth debug
@@ -68,6 +71,10 @@ public:
   // binds the renderer's environment).
   vtkTextureObject* CubeMapOf(vtkProp* prop) const;
 
+  // Binds `prop`'s dynamic cube map (if it has one) to `program`'s iceEnvironment: one prop's
+  // cube map at a time keeps one texture unit however many ice props there are.
+  void BindCubeMap(vtkShaderProgram* program, vtkProp* prop);
+
   // The key the frame is published under on an ice prop's property keys.
   static vtkInformationObjectBaseKey* FRAME();
 
@@ -76,6 +83,7 @@ public:
   // The textures handed to the shaders: set when rendered in this frame, else null.
   vtkTextureObject* BackfaceNormals = nullptr;
   vtkTextureObject* DepthInterval = nullptr;
+  vtkTextureObject* ScreenInterior = nullptr;
   vtkTextureObject* BoundCubeMap = nullptr; // one prop's cube map bound at a time
   vtkIceFrameTextures Textures;             // their texture units
   // The dynamic cube maps of the pass's cube-map pass, if it has one.

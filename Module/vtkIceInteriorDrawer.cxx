@@ -3,6 +3,7 @@
 #include "vtkIceInterior.h"
 #include "vtkIceInteriorLook.h"
 #include "vtkIceMapper.h"
+#include "vtkIcePropertyUniforms.h"
 
 #include "vtkPolyData.h"
 
@@ -16,7 +17,7 @@ void vtkIceInteriorDrawer::DrawCracks(
   const bool otherDebug = view == vtkIceMapper::DebugFrontDepth ||
     view == vtkIceMapper::DebugBackDepth || view == vtkIceMapper::DebugAir;
   if (otherDebug || (!overlay && (!mapper->CracksPerturbRefraction || debugCracks)) ||
-    (overlay && mapper->UsesSinglePassInterior()))
+    (overlay && (mapper->UsesSinglePassInterior() || mapper->UsesScreenInterior())))
   {
     return;
   }
@@ -44,7 +45,7 @@ void vtkIceInteriorDrawer::DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkAc
   const bool debugAir = view == vtkIceMapper::DebugAir;
   vtkIceProperty* look = mapper->GetIceProperty();
   if (look->GetNumberOfAirPlanes() == 0 || (view != vtkIceMapper::DebugOff && !debugAir) ||
-    mapper->UsesSinglePassInterior())
+    mapper->UsesSinglePassInterior() || mapper->UsesScreenInterior())
   {
     return;
   }
@@ -58,4 +59,22 @@ void vtkIceInteriorDrawer::DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkAc
   mapper->GetLookBounds(bounds);
   mapper->Interior->DrawAir(ren, actor, mapper->PreparedInput, bounds, look->GetNumberOfAirPlanes(),
     look->GetAirSeed(), look->GetMilkiness(), debugAir);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorDrawer::BeginScreenInterior(
+  vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program)
+{
+  vtkIceMapper::SetCameraUniforms(program, ren, actor);
+  vtkIcePropertyUniforms::Set(mapper->GetIceProperty(), program);
+  mapper->BindEnvironment(ren, actor);
+  mapper->SetEnvironmentUniforms(program);
+  mapper->PrepareInterior(ren, actor, program);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorDrawer::EndScreenInterior(vtkIceMapper* mapper, vtkRenderer* ren)
+{
+  mapper->FinishInterior(ren);
+  mapper->UnbindEnvironment(ren);
 }

@@ -1,5 +1,6 @@
 // Draws an ice prop's cracks and air planes as separate geometry for vtkIcePass and its back-face
-// sub-pass: the paper's passes, the crack and air debug views, cracks in the back-face normals.
+// sub-pass: the paper's passes, the crack and air debug views, cracks in the back-face normals;
+// and readies the screen-space interior's program for a prop (vtkIceScreenInterior).
 // What to draw is the prop's mapper's (its debug view, interior method, look and input); the
 // drawing is its vtkIceInterior's. Not the mapper's public API, neither wrapped nor installed:
 // the mapper grants its state to this class. Inside the module.
@@ -9,6 +10,7 @@
 class vtkActor;
 class vtkIceMapper;
 class vtkRenderer;
+class vtkShaderProgram;
 
 class vtkIceInteriorDrawer
 {
@@ -19,6 +21,12 @@ public:
 
   // The air planes of `actor` over the rendered scene, back to front for the camera.
   static void DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor);
+
+  // The interior's table, textures, environment and look of `actor` ready for `program` (the
+  // screen-space interior's), until EndScreenInterior.
+  static void BeginScreenInterior(
+    vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program);
+  static void EndScreenInterior(vtkIceMapper* mapper, vtkRenderer* ren);
 };
 
 #endif

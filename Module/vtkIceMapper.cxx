@@ -17,6 +17,7 @@
 #include "vtkIceSinglePassInterior.h"
 #include "vtkIceStaticEnvironment.h"
 #include "vtkIceSurfaceCheck.h"
+#include "vtkIceScreenInteriorFS.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
 #include "vtkIceTwoSidedFS.h"
@@ -135,13 +136,20 @@ bool vtkIceMapper::HasInterior() const
   }
   return view == DebugOff &&
     (this->IceProperty->GetNumberOfCracks() > 0 || this->IceProperty->GetNumberOfAirPlanes() > 0 ||
-      (this->IceProperty->HasMilkyCore() && this->InteriorMethod == InteriorSinglePass));
+      (this->IceProperty->HasMilkyCore() && this->InteriorMethod != InteriorPaperPasses));
 }
 
 //------------------------------------------------------------------------------
 bool vtkIceMapper::UsesSinglePassInterior() const
 {
   return this->InteriorMethod == InteriorSinglePass && this->DebugView != DebugCracksUnclipped &&
+    this->HasInterior();
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::UsesScreenInterior() const
+{
+  return this->InteriorMethod == InteriorScreenSpace && this->DebugView != DebugCracksUnclipped &&
     this->HasInterior();
 }
 
@@ -166,6 +174,10 @@ int vtkIceMapper::GetFrameNeeds()
   if (this->UsesSinglePassInterior())
   {
     needs |= vtkIceFrame::NeedsBackDepthForInterior;
+  }
+  else if (this->UsesScreenInterior())
+  {
+    needs |= vtkIceFrame::NeedsBackDepthForInterior | vtkIceFrame::NeedsScreenInterior;
   }
   else if (this->HasInterior())
   {
@@ -232,21 +244,7 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->Interior->ForgetRenderPasses();
     this->HelpersSawPass = false;
   }
-  // A dynamic cube map is handed to the shader by the pass that rendered it.
-  vtkTextureObject* dynamicCubeMap = frame ? frame->CubeMapOf(act) : nullptr;
-  this->ActiveEnvironmentObject = dynamicCubeMap
-    ? nullptr
-    : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
-  if (this->IceProperty->GetRoughness() > 0.0)
-  {
-    this->ActiveRoughEnvironment =
-      this->Prefiltered->Update(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()),
-        dynamicCubeMap ? dynamicCubeMap : this->ActiveEnvironmentObject,
-        dynamicCubeMap ? frame->CubeMapVersion : this->Environment->GetVersion());
-    this->ActiveRoughEnvironment->Activate();
-    this->Prefiltered->BeginSampling(
-      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState());
-  }
+  this->BindEnvironment(ren, act);
   if (this->IceProperty->GetNormalMap() && this->IceProperty->GetBumpStrength() > 0.0)
   {
     this->IceProperty->GetNormalMap()->Render(ren);
@@ -290,12 +288,13 @@ void vtkIceMapper::WarnSettingsWithoutEffect(bool withPass)
                        "on the renderer: its back faces give the path in the ice.");
     this->WarnedAbsorptionWithoutPass = true;
   }
-  if (this->IceProperty->HasMilkyCore() && this->InteriorMethod != InteriorSinglePass &&
+  if (this->IceProperty->HasMilkyCore() && this->InteriorMethod == InteriorPaperPasses &&
     !this->WarnedCoreWithPaperPasses)
   {
     vtkWarningMacro(<< "MilkyCoreRadius " << this->IceProperty->GetMilkyCoreRadius()
-                    << " shows nothing with InteriorPaperPasses: the single-pass interior draws "
-                       "the milky core. Set InteriorMethod to InteriorSinglePass to see it.");
+                    << " shows nothing with InteriorPaperPasses: the single-pass and screen-space "
+                       "interiors draw the milky core. Set InteriorMethod to InteriorSinglePass or "
+                       "InteriorScreenSpace to see it.");
     this->WarnedCoreWithPaperPasses = true;
   }
 }
@@ -309,6 +308,34 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
   {
     this->IceProperty->GetNormalMap()->PostRender(ren);
   }
+  this->UnbindEnvironment(ren);
+  this->FinishInterior(ren);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
+{
+  // A dynamic cube map is handed to the shader by the pass that rendered it.
+  vtkIceFrame* frame = vtkIceFrame::Of(act);
+  vtkTextureObject* dynamicCubeMap = frame ? frame->CubeMapOf(act) : nullptr;
+  this->ActiveEnvironmentObject = dynamicCubeMap
+    ? nullptr
+    : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
+  if (this->IceProperty->GetRoughness() > 0.0)
+  {
+    this->ActiveRoughEnvironment =
+      this->Prefiltered->Update(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()),
+        dynamicCubeMap ? dynamicCubeMap : this->ActiveEnvironmentObject,
+        dynamicCubeMap ? frame->CubeMapVersion : this->Environment->GetVersion());
+    this->ActiveRoughEnvironment->Activate();
+    this->Prefiltered->BeginSampling(
+      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::UnbindEnvironment(vtkRenderer* ren)
+{
   this->Environment->Unbind(ren);
   this->ActiveEnvironmentObject = nullptr;
   if (this->ActiveRoughEnvironment)
@@ -318,10 +345,26 @@ void vtkIceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
       static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState());
     this->ActiveRoughEnvironment = nullptr;
   }
-  if (this->SinglePassPrepared)
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetEnvironmentUniforms(vtkShaderProgram* program)
+{
+  // A dynamic cube map holds the scene at the raw world direction.
+  static const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  program->SetUniformMatrix3x3("iceEnvironmentMatrix",
+    const_cast<float*>(
+      this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity));
+  program->SetUniformi("iceEnvironmentColorSpace",
+    this->ActiveEnvironmentObject ? this->Environment->GetColorSpace() : 0);
+  if (this->ActiveEnvironmentObject)
   {
-    this->SinglePass->Finish(ren);
-    this->SinglePassPrepared = false;
+    program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());
+  }
+  if (this->ActiveRoughEnvironment)
+  {
+    program->SetUniformi(
+      "iceEnvironmentPrefiltered", this->ActiveRoughEnvironment->GetTextureUnit());
   }
 }
 
@@ -349,7 +392,8 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   {
     parts.FragmentDeclarations += "#define ICE_ROUGH_ENVIRONMENT\n";
   }
-  parts.FragmentDeclarations += optics + Get(vtkIceSurfaceFS, "Dec");
+  parts.FragmentDeclarations +=
+    optics + Get(vtkIceSurfaceFS, "Environment") + Get(vtkIceSurfaceFS, "Dec");
   parts.FragmentImpl += Get(vtkIceSurfaceFS, "Impl");
   if (this->DrawsScalarColors())
   {
@@ -421,11 +465,12 @@ void vtkIceMapper::AddFrameInputParts(vtkIceShaderParts& parts, bool interior)
       "    icePathLength = iceEyePathLength(e, iceViewDirectionWC, iceViewDepth(),\n"
       "      texelFetch(iceBackNormals, iceScreenTexel(), 0).a);\n"
       "#endif"));
-  if (interior)
-  {
-    parts.Hooks.emplace_back(
-      "Interior", guarded("ICE_FRAME_INTERIOR", vtkIceSinglePassInterior::Call()));
-  }
+  // The single pass's interior, or the screen-space step's result.
+  parts.FragmentFunctions +=
+    guarded("ICE_FRAME_SCREEN_INTERIOR", Get(vtkIceScreenInteriorFS, "SurfaceDec"));
+  parts.Hooks.emplace_back("Interior",
+    (interior ? guarded("ICE_FRAME_INTERIOR", vtkIceSinglePassInterior::Call()) : "") +
+      guarded("ICE_FRAME_SCREEN_INTERIOR", Get(vtkIceScreenInteriorFS, "SurfaceCall")));
   parts.Hooks.emplace_back(
     "Debug", guarded("ICE_FRAME_DEPTH_DEBUG", Get(vtkIceDebugDepthFS, "Impl")));
 }
@@ -435,22 +480,7 @@ void vtkIceMapper::SetIceShaderParameters(
   vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
 {
   vtkIcePropertyUniforms::Set(this->IceProperty, program);
-  // A dynamic cube map holds the scene at the raw world direction.
-  static const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  program->SetUniformMatrix3x3("iceEnvironmentMatrix",
-    const_cast<float*>(
-      this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity));
-  program->SetUniformi("iceEnvironmentColorSpace",
-    this->ActiveEnvironmentObject ? this->Environment->GetColorSpace() : 0);
-  if (this->ActiveEnvironmentObject)
-  {
-    program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());
-  }
-  if (this->ActiveRoughEnvironment)
-  {
-    program->SetUniformi(
-      "iceEnvironmentPrefiltered", this->ActiveRoughEnvironment->GetTextureUnit());
-  }
+  this->SetEnvironmentUniforms(program);
   // The parameter of the depth debug views vtkIcePass adds.
   if (program->IsUniformUsed("iceDebugChannel"))
   {
@@ -493,40 +523,56 @@ void vtkIceMapper::SetIceShaderParameters(
   // The single-pass interior, where the frame gives the back depth.
   if (this->ActiveFrameInputs & vtkIceFrame::InteriorInput)
   {
-    if (!this->SinglePassPrepared)
+    this->PrepareInterior(ren, act, program);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program)
+{
+  if (!this->SinglePassPrepared)
+  {
+    vtkIceSinglePassInterior::Settings settings;
+    settings.Cracks = this->InputFlat ? 0 : this->IceProperty->GetNumberOfCracks();
+    settings.CrackSeed = this->IceProperty->GetCrackSeed();
+    settings.CrackIntensity = this->IceProperty->GetCrackIntensity();
+    settings.CrackReflection = this->IceProperty->GetCrackReflection();
+    settings.CrackBumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
+    this->GetLookBounds(settings.Bounds);
+    settings.AirPlanes = this->IceProperty->GetNumberOfAirPlanes();
+    settings.AirSeed = this->IceProperty->GetAirSeed();
+    settings.Milkiness = this->IceProperty->GetMilkiness();
+    if (this->IceProperty->HasMilkyCore())
     {
-      vtkIceSinglePassInterior::Settings settings;
-      settings.Cracks = this->InputFlat ? 0 : this->IceProperty->GetNumberOfCracks();
-      settings.CrackSeed = this->IceProperty->GetCrackSeed();
-      settings.CrackIntensity = this->IceProperty->GetCrackIntensity();
-      settings.CrackReflection = this->IceProperty->GetCrackReflection();
-      settings.CrackBumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
-      this->GetLookBounds(settings.Bounds);
-      settings.AirPlanes = this->IceProperty->GetNumberOfAirPlanes();
-      settings.AirSeed = this->IceProperty->GetAirSeed();
-      settings.Milkiness = this->IceProperty->GetMilkiness();
-      if (this->IceProperty->HasMilkyCore())
-      {
-        settings.CoreDensity = vtkIceInteriorLook::CoreDensity(this->IceProperty->GetMilkiness());
-        vtkIceInteriorLook::CoreFrame(settings.Bounds, this->IceProperty->GetMilkyCoreRadius(),
-          settings.CoreCenter, settings.CoreScale);
-      }
-      settings.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
-        : this->DebugView == DebugAir                        ? vtkIceInteriorLook::DebugAir
-                                                             : vtkIceInteriorLook::DebugNone;
-      if (this->DebugView == DebugCracksClipped)
-      {
-        settings.AirPlanes = 0;
-      }
-      else if (this->DebugView == DebugAir)
-      {
-        settings.Cracks = 0;
-      }
-      this->SinglePass->Prepare(ren, act, this->PreparedInput, settings,
-        this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
-      this->SinglePassPrepared = true;
+      settings.CoreDensity = vtkIceInteriorLook::CoreDensity(this->IceProperty->GetMilkiness());
+      vtkIceInteriorLook::CoreFrame(settings.Bounds, this->IceProperty->GetMilkyCoreRadius(),
+        settings.CoreCenter, settings.CoreScale);
     }
-    this->SinglePass->SetUniforms(program);
+    settings.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
+      : this->DebugView == DebugAir                        ? vtkIceInteriorLook::DebugAir
+                                                           : vtkIceInteriorLook::DebugNone;
+    if (this->DebugView == DebugCracksClipped)
+    {
+      settings.AirPlanes = 0;
+    }
+    else if (this->DebugView == DebugAir)
+    {
+      settings.Cracks = 0;
+    }
+    this->SinglePass->Prepare(ren, act, this->PreparedInput, settings,
+      this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
+    this->SinglePassPrepared = true;
+  }
+  this->SinglePass->SetUniforms(program);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::FinishInterior(vtkRenderer* ren)
+{
+  if (this->SinglePassPrepared)
+  {
+    this->SinglePass->Finish(ren);
+    this->SinglePassPrepared = false;
   }
 }
 
@@ -638,8 +684,8 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
   os << indent << "CullHiddenBackfaces: " << (this->CullHiddenBackfaces ? "On" : "Off") << "\n";
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
-  os << indent << "InteriorMethod: "
-     << (this->InteriorMethod == InteriorSinglePass ? "SinglePass" : "PaperPasses") << "\n";
+  static const char* const interiorMethods[] = { "PaperPasses", "SinglePass", "ScreenSpace" };
+  os << indent << "InteriorMethod: " << interiorMethods[this->InteriorMethod] << "\n";
   os << indent
      << "CrackClipping: " << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval")
      << "\n";

@@ -369,7 +369,8 @@ public:
   enum InteriorMethods
   {
     InteriorPaperPasses = 0, // the paper: a depth-interval pass, crack and air draws per ice
-    InteriorSinglePass = 1   // in the ice's own fragment shader, intersected along the view ray
+    InteriorSinglePass = 1,  // in the ice's own fragment shader, intersected along the view ray
+    InteriorScreenSpace = 2  // as the single pass, once per pixel in a step of vtkIcePass
   };
 
   ///@{
@@ -380,15 +381,18 @@ public:
    * crack sheet and air plane and composites them there: no depth-interval pass, no crack or air
    * draw call. InteriorPaperPasses: the paper's method: the ice's depth interval is rendered,
    * then the air planes (blended, back to front) and the crack sheets (their highlights added)
-   * are drawn over it. On a GPU the single pass is the faster one at the default look (an
-   * NVIDIA H200, VTK's default window: 2-43 % less frame time); on llvmpipe the paper's passes
-   * are (30-48 % less): Documentation/performance.md. DebugCracksUnclipped always uses the paper's
-   * passes.
+   * are drawn over it. InteriorScreenSpace: the single pass's look, evaluated once per covered
+   * pixel by a screen-space step of vtkIcePass before the scene (inside the ice's projected
+   * bounding box, from the ice's own front depth and the back faces' depth) and applied by the
+   * ice's surface: its cost no longer grows with the ice's triangles and overdraw.
+   * Documentation/performance.md compares the three. DebugCracksUnclipped always uses the
+   * paper's passes.
    */
-  vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorSinglePass);
+  vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorScreenSpace);
   vtkGetMacro(InteriorMethod, int);
   void SetInteriorMethodToSinglePass() { this->SetInteriorMethod(InteriorSinglePass); }
   void SetInteriorMethodToPaperPasses() { this->SetInteriorMethod(InteriorPaperPasses); }
+  void SetInteriorMethodToScreenSpace() { this->SetInteriorMethod(InteriorScreenSpace); }
   ///@}
 
   enum DebugViews
@@ -469,6 +473,16 @@ protected:
   // Whether the interior (cracks or air) is drawn in this frame, and by which method.
   bool HasInterior() const;
   bool UsesSinglePassInterior() const;
+  bool UsesScreenInterior() const;
+  // The single pass's or the screen step's interior: its table and textures ready for a draw of
+  // `act` (until FinishInterior), its uniforms set on `program`.
+  void PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program);
+  void FinishInterior(vtkRenderer* ren);
+  // The environment the ice samples in a draw of `act` (a dynamic cube map is bound by the
+  // frame): bound until UnbindEnvironment, its uniforms set on `program`.
+  void BindEnvironment(vtkRenderer* ren, vtkActor* act);
+  void SetEnvironmentUniforms(vtkShaderProgram* program);
+  void UnbindEnvironment(vtkRenderer* ren);
 
   vtkSmartPointer<vtkIceProperty> IceProperty; // never null
   bool TwoSidedRefraction = true;

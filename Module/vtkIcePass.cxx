@@ -9,6 +9,7 @@
 #include "vtkIceMapperAccess.h"
 #include "vtkIceRenderPasses.h"
 #include "vtkIceRendererSteps.h"
+#include "vtkIceScreenInterior.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceStepTimers.h"
@@ -83,6 +84,7 @@ vtkPropCollection* PickFromProps(vtkRenderer* renderer)
 //------------------------------------------------------------------------------
 vtkIcePass::vtkIcePass()
   : Frame(vtkIceFrame::New())
+  , ScreenInterior(new vtkIceScreenInterior)
 {
   // The steps of the renderer's own rendering, with its settings (vtkIceRendererSteps.h), and
   // the ice's air and cracks right after the opaque geometry.
@@ -123,6 +125,7 @@ vtkIcePass::~vtkIcePass()
   this->BackfaceNormalPass->Delete();
   this->DepthIntervalPass->Delete();
   delete this->StepTimers;
+  delete this->ScreenInterior;
   this->Frame->Delete();
 }
 
@@ -251,6 +254,49 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
     this->StopStep(BackfaceNormalStep);
     this->Frame->BackfaceNormals = this->BackfaceNormalPass->GetNormalTexture();
   }
+  if (needs & vtkIceFrame::NeedsScreenInterior)
+  {
+    // Timed as the interior when no paper passes' interior shares the step this frame.
+    const bool timed = !(needs & vtkIceFrame::NeedsDepthIntervalForInterior);
+    if (timed)
+    {
+      this->StartStep(InteriorStep);
+    }
+    this->RenderScreenInterior(iceState);
+    if (timed)
+    {
+      this->StopStep(InteriorStep);
+    }
+    // Each prop's own depth interval replaced the one of all the ice.
+    this->Frame->DepthInterval = nullptr;
+    if (needs & vtkIceFrame::NeedsDepthIntervalBeforeScene)
+    {
+      this->RenderDepthInterval(iceState);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIcePass::RenderScreenInterior(const vtkRenderState* iceState)
+{
+  this->ScreenInterior->Begin();
+  for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = iceState->GetPropArray()[i];
+    vtkIceMapper* mapper = vtkIceMapperAccess::Of(prop);
+    if (!(vtkIceMapperAccess::FrameNeeds(mapper) & vtkIceFrame::NeedsScreenInterior))
+    {
+      continue;
+    }
+    vtkRenderState propState(iceState->GetRenderer());
+    propState.SetPropArrayAndCount(&prop, 1);
+    propState.SetFrameBuffer(iceState->GetFrameBuffer());
+    this->RenderDepthInterval(&propState);
+    this->ScreenInterior->Draw(
+      iceState, static_cast<vtkActor*>(prop), mapper, this->Frame, this->Frame->DepthInterval);
+    this->Frame->Textures.Release(this->Frame->DepthInterval);
+  }
+  this->Frame->ScreenInterior = this->ScreenInterior->GetTexture();
 }
 
 //------------------------------------------------------------------------------
@@ -402,16 +448,8 @@ bool vtkIcePass::SetShaderParameters(
     program->SetUniform2f("iceDepthRange",
       std::array<float, 2>{ static_cast<float>(range[0]), static_cast<float>(range[1]) }.data());
   }
-  if (vtkTextureObject* cubeMap = frame->CubeMapOf(prop))
-  {
-    // One prop's cube map at a time keeps one texture unit however many ice props there are.
-    if (frame->BoundCubeMap && frame->BoundCubeMap != cubeMap)
-    {
-      frame->Textures.Release(frame->BoundCubeMap);
-    }
-    frame->BoundCubeMap = cubeMap;
-    frame->Textures.Bind(program, "iceEnvironment", cubeMap);
-  }
+  frame->Textures.BindScreen(program, renderer, "iceScreenInterior", frame->ScreenInterior);
+  frame->BindCubeMap(program, prop);
   return true;
 }
 
@@ -422,6 +460,7 @@ void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
   this->Frame->Textures.ReleaseAll();
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
   this->DepthIntervalPass->ReleaseGraphicsResources(w);
+  this->ScreenInterior->ReleaseGraphicsResources(w);
   if (this->StepTimers)
   {
     this->StepTimers->ReleaseGraphicsResources();

@@ -19,7 +19,10 @@
  *    is used (static environment),
  * 2. depth interval of all the ice (vtkIceDepthIntervalPass: front and back depth), for the depth
  *    debug views and cracks drawn into the back-face normals (CracksPerturbRefraction),
- * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1).
+ * 3. back-face normals (vtkIceBackfaceNormalPass, for paper eq 1),
+ * 4. the screen-space interior of the ice with InteriorScreenSpace: prop by prop, its own depth
+ *    interval, then its cracks, air and milky core once per pixel into a texture its surface
+ *    applies.
  * The pass owns the frame's textures. For the frame it is one of the render passes of each ice
  * prop (vtkOpenGLRenderPass): when an ice shader is built it adds the code that samples the
  * textures it has ready (PostReplaceShaderValues), and when one is bound it hands them over
@@ -42,6 +45,7 @@ class vtkIceBackfaceNormalPass;
 class vtkIceCubeMapPass;
 class vtkIceDepthIntervalPass;
 class vtkIceFrame;
+class vtkIceScreenInterior;
 class vtkIceOpaqueStep;
 class vtkIceOverlayStep;
 class vtkIceTranslucentStep;
@@ -146,6 +150,9 @@ protected:
   // then its cracks. After the opaque geometry (a step of the default delegate).
   void RenderOverlays(const vtkRenderState* s, const vtkRenderState* iceState);
 
+  // The screen-space interior of the props of `iceState` that use it (InteriorScreenSpace), prop
+  // by prop after the back faces: its own depth interval, then its interior once per pixel.
+  void RenderScreenInterior(const vtkRenderState* iceState);
   // Ends the frame: its textures are no longer handed over.
   void EndFrame();
 
@@ -169,6 +176,7 @@ protected:
   int NumberOfIceProps = 0;
   bool MeasureStepTimes = false;
   vtkIceStepTimers* StepTimers = nullptr; // while MeasureStepTimes is on
+  vtkIceScreenInterior* ScreenInterior = nullptr;
 
 private:
   vtkIcePass(const vtkIcePass&) = delete;

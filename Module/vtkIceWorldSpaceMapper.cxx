@@ -252,7 +252,8 @@ void vtkIceWorldSpaceMapper::ReplaceShaderValues(
     vtkIceShaderParts parts;
     parts.VertexDeclarations = Get(vtkIceWorldSpaceVS, "Dec");
     parts.VertexImpl = Get(vtkIceWorldSpaceVS, "Impl");
-    parts.FragmentDeclarations = Get(vtkIceWorldSpaceFS, "Dec");
+    parts.FragmentDeclarations =
+      Get(vtkIceWorldSpaceFS, "Uniforms") + Get(vtkIceWorldSpaceFS, "Dec");
     this->AddIceShaderParts(parts, ren, act);
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
@@ -286,7 +287,6 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
   // Model to world, including the inverse of the VBO's coordinate shift and scale. Matrices are
   // kept transposed, as VTK uploads them.
   vtkNew<vtkMatrix4x4> mcwc;
-  vtkNew<vtkMatrix3x3> normalMCWC;
   vtkOpenGLVertexBufferObject* vertices = this->VBOs->GetVBO("vertexMC");
   if (vertices && vertices->GetCoordShiftAndScaleEnabled())
   {
@@ -299,9 +299,24 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
     vtkMatrix3x3* actorNormals;
     static_cast<vtkOpenGLActor*>(act)->GetKeyMatrices(actorMCWC, actorNormals);
     vtkMatrix4x4::Multiply4x4(mcwc, actorMCWC, mcwc);
-    normalMCWC->DeepCopy(actorNormals);
   }
   program->SetUniformMatrix("iceMCWCMatrix", mcwc);
+  SetCameraUniforms(program, ren, act);
+  this->SetIceShaderParameters(program, ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceWorldSpaceMapper::SetCameraUniforms(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
+{
+  vtkNew<vtkMatrix3x3> normalMCWC;
+  if (!act->GetIsIdentity())
+  {
+    vtkMatrix4x4* actorMCWC;
+    vtkMatrix3x3* actorNormals;
+    static_cast<vtkOpenGLActor*>(act)->GetKeyMatrices(actorMCWC, actorNormals);
+    normalMCWC->DeepCopy(actorNormals);
+  }
   program->SetUniformMatrix("iceNormalMCWCMatrix", normalMCWC);
 
   vtkCamera* camera = ren->GetActiveCamera();
@@ -314,7 +329,7 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
   program->SetUniform3f("iceCameraWC", eyeWC);
   program->SetUniform3f("iceViewDirectionWC", directionWC);
   program->SetUniformi("iceParallelProjection", camera->GetParallelProjection() ? 1 : 0);
-  if (program->IsUniformUsed("iceWCDCMatrix"))
+  if (program->IsUniformUsed("iceWCDCMatrix") || program->IsUniformUsed("iceDCWCMatrix"))
   {
     vtkMatrix4x4* wcvc;
     vtkMatrix3x3* normals;
@@ -322,6 +337,10 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
     vtkMatrix4x4* wcdc;
     static_cast<vtkOpenGLCamera*>(camera)->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
     program->SetUniformMatrix("iceWCDCMatrix", wcdc);
+    // wcdc is kept transposed, so its inverse is the transposed inverse GLSL reads.
+    vtkNew<vtkMatrix4x4> dcwc;
+    vtkMatrix4x4::Invert(wcdc, dcwc);
+    program->SetUniformMatrix("iceDCWCMatrix", dcwc);
   }
 
   // Inverses, for the programs that read them. Uploaded as GLSL reads them: VTK uploads a
@@ -346,8 +365,6 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
     static_cast<float>(projection->GetElement(2, 3)), camera->GetParallelProjection() ? 1.0f : 0.0f,
     0.0f };
   program->SetUniform4f("iceDepthToWindow", depthToWindow);
-
-  this->SetIceShaderParameters(program, ren, act);
 }
 
 //------------------------------------------------------------------------------

@@ -93,6 +93,11 @@ protected:
   virtual void SetIceShaderParameters(
     vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act) = 0;
 
+  // The world-space camera and matrices of vtkIceWorldSpaceFS.glsl's Uniforms for `act` (and
+  // iceDCWCMatrix where used): also for programs that are not this mapper's (the screen-space
+  // interior's quad).
+  static void SetCameraUniforms(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
+
   // Adds to the geometry shader VTK uses for edges and wide lines, if any, the copying of every
   // ice varying declared in `vs` (out TYPE iceNameVSOutput). Returns what VTK's geometry shader
   // lacks that the ice needs, empty when nothing.

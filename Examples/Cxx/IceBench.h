@@ -51,7 +51,7 @@ struct Configuration
   Material Ice = Material::Plain;
   int Cracks = 0;
   int AirPlanes = 0;                 // vtkIceMapper::NumberOfAirPlanes
-  bool PaperPasses = false;          // vtkIceMapper::InteriorPaperPasses instead of the single pass
+  int Interior = 1;                  // vtkIceMapper::InteriorMethods (1: InteriorSinglePass)
   bool PlainBackfaceCulling = false; // plain VTK with its property's BackfaceCulling on
   bool DrawEveryFace = false;        // vtkIceMapper::CullHiddenBackfaces off
   bool CubeMap = false;
@@ -148,6 +148,11 @@ int Parse(int argc, char* argv[], Options& options);
 // IceBenchGroups.cxx
 // The groups of a run: all, or those of --quick (shortened), whose id contains `only`.
 std::vector<Group> SelectGroups(bool quick, const std::string& only);
+
+// An interior method (vtkIceMapper::InteriorMethods) in words ("single pass") and in the CSV
+// ("single-pass").
+std::string InteriorName(int interior);
+std::string InteriorId(int interior);
 
 // IceBenchMeasure.cxx
 Schedule ChooseSchedule(bool quick, int frames);

@@ -2,7 +2,9 @@
 #include "IceBench.h"
 
 #include "vtkIceCubeMapPass.h"
+#include "vtkIceMapper.h"
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -30,15 +32,19 @@ Configuration PlainCulled()
   return c;
 }
 
+const int SinglePass = vtkIceMapper::InteriorSinglePass;
+const int PaperPasses = vtkIceMapper::InteriorPaperPasses;
+const int ScreenSpace = vtkIceMapper::InteriorScreenSpace;
+
 Configuration Ice(
-  const std::string& label, Material material, int cracks = 0, bool paperPasses = false)
+  const std::string& label, Material material, int cracks = 0, int interior = SinglePass)
 {
   Configuration c;
   c.Label = label;
   c.Ice = material;
   c.Cracks = material == Material::FullLook ? 2 : cracks;
   c.AirPlanes = material == Material::FullLook ? 19 : 0;
-  c.PaperPasses = paperPasses;
+  c.Interior = interior;
   return c;
 }
 
@@ -83,7 +89,8 @@ std::vector<Group> DefineGroups()
         EveryFace(Ice("two-sided ice, every face drawn", Material::TwoSided)),
         Ice("two-sided ice, exit point", Material::ExitPoint),
         Ice("full look, single pass", Material::FullLook),
-        Ice("full look, paper passes", Material::FullLook, 2, true) };
+        Ice("full look, paper passes", Material::FullLook, 2, PaperPasses),
+        Ice("full look, screen space", Material::FullLook, 2, ScreenSpace) };
       groups.push_back(g);
     }
   }
@@ -114,13 +121,13 @@ std::vector<Group> DefineGroups()
   cracks.Object = "teapot";
   cracks.Quick = true;
   cracks.Configurations = { Plain() };
-  for (bool paper : { false, true })
+  for (int interior : { SinglePass, PaperPasses, ScreenSpace })
   {
     for (int n : { 0, 2, 8, 32, 128 })
     {
       cracks.Configurations.push_back(Ice(std::to_string(n) + (n == 1 ? " crack" : " cracks") +
-          (paper ? ", paper passes" : ", single pass"),
-        Material::TwoSided, n, paper));
+          ", " + IceBench::InteriorName(interior),
+        Material::TwoSided, n, interior));
     }
   }
   groups.push_back(cracks);
@@ -135,7 +142,8 @@ std::vector<Group> DefineGroups()
     // The full look too: at the same coverage, whether its cost follows the triangles.
     g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
       Ice("two-sided ice", Material::TwoSided), Ice("full look, single pass", Material::FullLook),
-      Ice("full look, paper passes", Material::FullLook, 2, true) };
+      Ice("full look, paper passes", Material::FullLook, 2, PaperPasses),
+      Ice("full look, screen space", Material::FullLook, 2, ScreenSpace) };
     groups.push_back(g);
   }
   return groups;
@@ -185,4 +193,18 @@ std::vector<Group> IceBench::SelectGroups(bool quick, const std::string& only)
     groups.push_back(g);
   }
   return groups;
+}
+
+std::string IceBench::InteriorName(int interior)
+{
+  return interior == PaperPasses ? "paper passes"
+    : interior == ScreenSpace    ? "screen space"
+                                 : "single pass";
+}
+
+std::string IceBench::InteriorId(int interior)
+{
+  std::string id = InteriorName(interior);
+  std::replace(id.begin(), id.end(), ' ', '-');
+  return id;
 }

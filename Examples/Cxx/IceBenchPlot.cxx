@@ -1,5 +1,7 @@
 // ice-bench's plot: four VTK charts rendered offscreen into one PNG.
 #include "IceBench.h"
+
+#include "vtkIceMapper.h"
 #include "IceOutputFile.h"
 
 #include "vtkAxis.h"
@@ -32,8 +34,8 @@ using IceBench::Configuration;
 using IceBench::Group;
 using IceBench::Material;
 
-const double Colors[5][3] = { { 0.35, 0.35, 0.35 }, { 0.30, 0.60, 0.85 }, { 0.10, 0.35, 0.70 },
-  { 0.85, 0.45, 0.15 }, { 0.55, 0.20, 0.55 } };
+const double Colors[6][3] = { { 0.35, 0.35, 0.35 }, { 0.30, 0.60, 0.85 }, { 0.10, 0.35, 0.70 },
+  { 0.85, 0.45, 0.15 }, { 0.55, 0.20, 0.55 }, { 0.20, 0.60, 0.30 } };
 
 vtkSmartPointer<vtkDoubleArray> Column(const char* name, vtkIdType rows)
 {
@@ -120,11 +122,13 @@ void Objects(
   vtkNew<vtkTable> table;
   table->AddColumn(Column("x", rows));
   // The series: material and interior method.
-  const Material materials[4] = { Material::OneSided, Material::TwoSided, Material::FullLook,
-    Material::FullLook };
-  const bool paper[4] = { false, false, false, true };
-  const char* series[4] = { "one-sided", "two-sided", "full look, single pass",
-    "full look, paper passes" };
+  const int single = vtkIceMapper::InteriorSinglePass;
+  const Material materials[5] = { Material::OneSided, Material::TwoSided, Material::FullLook,
+    Material::FullLook, Material::FullLook };
+  const int interior[5] = { single, single, single, vtkIceMapper::InteriorPaperPasses,
+    vtkIceMapper::InteriorScreenSpace };
+  const char* series[5] = { "one-sided", "two-sided", "full look, single pass",
+    "full look, paper passes", "full look, screen space" };
   for (const char* name : series)
   {
     table->AddColumn(Column(name, rows));
@@ -137,9 +141,9 @@ void Objects(
     positions.push_back(static_cast<double>(r + 1));
     for (const Configuration& c : shown[r]->Configurations)
     {
-      for (int m = 0; m < 4; ++m)
+      for (int m = 0; m < 5; ++m)
       {
-        if (c.Ice == materials[m] && c.PaperPasses == paper[m] && !c.DrawEveryFace)
+        if (c.Ice == materials[m] && c.Interior == interior[m] && !c.DrawEveryFace)
         {
           table->SetValue(r, m + 1, c.Ratio);
           largest = std::max(largest, c.Ratio * 1.05);
@@ -147,7 +151,7 @@ void Objects(
       }
     }
   }
-  for (int m = 0; m < 4; ++m)
+  for (int m = 0; m < 5; ++m)
   {
     vtkPlot* bars = chart->AddPlot(vtkChart::BAR);
     bars->SetInputData(table, "x", series[m]);
@@ -263,8 +267,14 @@ void Triangles(
   const vtkIdType rows = static_cast<vtkIdType>(shown.size());
   vtkNew<vtkTable> table;
   table->AddColumn(Column("triangles", rows));
-  const char* series[3] = { "plain VTK", "one-sided ice", "two-sided ice" };
-  const Material materials[3] = { Material::Plain, Material::OneSided, Material::TwoSided };
+  // The full look with its cost per fragment (single pass) and per pixel (screen space).
+  const char* series[5] = { "plain VTK", "one-sided ice", "two-sided ice", "full look, single pass",
+    "full look, screen space" };
+  const Material materials[5] = { Material::Plain, Material::OneSided, Material::TwoSided,
+    Material::FullLook, Material::FullLook };
+  const int interior[5] = { 0, 0, 0, vtkIceMapper::InteriorSinglePass,
+    vtkIceMapper::InteriorScreenSpace };
+  const int colors[5] = { 0, 1, 2, 4, 5 };
   for (const char* name : series)
   {
     table->AddColumn(Column(name, rows));
@@ -274,9 +284,9 @@ void Triangles(
     table->SetValue(r, 0, static_cast<double>(shown[r]->Triangles));
     for (const Configuration& c : shown[r]->Configurations)
     {
-      for (int m = 0; m < 3; ++m)
+      for (int m = 0; m < 5; ++m)
       {
-        if (c.Ice == materials[m])
+        if (c.Ice == materials[m] && (c.Ice != Material::FullLook || c.Interior == interior[m]))
         {
           table->SetValue(r, m + 1, c.Stats.Median);
         }
@@ -285,9 +295,9 @@ void Triangles(
   }
   if (rows > 0)
   {
-    for (int m = 0; m < 3; ++m)
+    for (int m = 0; m < 5; ++m)
     {
-      Line(chart, table, "triangles", series[m], Colors[m]);
+      Line(chart, table, "triangles", series[m], Colors[colors[m]]);
     }
   }
   chart->GetAxis(vtkAxis::BOTTOM)->SetLogScale(true);
@@ -310,7 +320,7 @@ void Cracks(
   std::vector<int> counts;
   for (const Configuration& c : g->Configurations)
   {
-    if (c.Ice != Material::Plain && !c.PaperPasses)
+    if (c.Ice != Material::Plain && c.Interior == vtkIceMapper::InteriorSinglePass)
     {
       counts.push_back(c.Cracks);
     }
@@ -321,6 +331,7 @@ void Cracks(
   table->AddColumn(Column("plain VTK", rows));
   table->AddColumn(Column("single pass", rows));
   table->AddColumn(Column("paper passes", rows));
+  table->AddColumn(Column("screen space", rows));
   std::vector<double> positions;
   std::vector<std::string> labels;
   for (vtkIdType r = 0; r < rows; ++r)
@@ -331,7 +342,10 @@ void Cracks(
     {
       if (c.Ice != Material::Plain && c.Cracks == counts[r])
       {
-        table->SetValue(r, c.PaperPasses ? 3 : 2, c.Stats.Median);
+        const int column = c.Interior == vtkIceMapper::InteriorPaperPasses ? 3
+          : c.Interior == vtkIceMapper::InteriorScreenSpace                ? 4
+                                                                           : 2;
+        table->SetValue(r, column, c.Stats.Median);
       }
     }
     positions.push_back(static_cast<double>(r));
@@ -340,6 +354,7 @@ void Cracks(
   Line(chart, table, "position", "plain VTK", Colors[0]);
   Line(chart, table, "position", "single pass", Colors[2]);
   Line(chart, table, "position", "paper passes", Colors[3]);
+  Line(chart, table, "position", "screen space", Colors[5]);
   Labels(chart->GetAxis(vtkAxis::BOTTOM), positions, labels);
   chart->GetAxis(vtkAxis::LEFT)->SetBehavior(vtkAxis::FIXED);
   // Logarithmic: the paper passes' cost grows a hundredfold over the series.

@@ -106,7 +106,7 @@ std::string Csv(const std::vector<Group>& groups, const Machine& machine)
           << c.Label << "\"," << MaterialName(c.Ice) << "," << c.Cracks << "," << c.AirPlanes << ","
           << (c.Ice == Material::Plain || c.Ice == Material::OneSided
                  ? ""
-                 : (c.PaperPasses ? "paper-passes" : "single-pass"))
+                 : IceBench::InteriorId(c.Interior))
           << "," << (c.CubeMap ? 1 : 0) << "," << (c.CubeMap ? modes[c.UpdateMode] : "") << ","
           << (c.CubeMap ? std::to_string(c.FaceSize) : "") << ","
           << (c.CubeMap ? std::to_string(c.FacesPerFrame) : "") << ","

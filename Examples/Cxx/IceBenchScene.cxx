@@ -119,8 +119,7 @@ IceBench::Scene IceBench::BuildScene(
     }
     mapper->SetNumberOfAirPlanes(0);
     mapper->SetCullHiddenBackfaces(!c.DrawEveryFace);
-    mapper->SetInteriorMethod(
-      c.PaperPasses ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorSinglePass);
+    mapper->SetInteriorMethod(c.Interior);
     actor->SetMapper(mapper);
     if (c.Ice == Material::ExitPoint)
     {

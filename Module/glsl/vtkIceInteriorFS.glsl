@@ -1,9 +1,10 @@
 //ICE::Dec
-// The ice's cracks and air evaluated in the ice's own fragment (vtkIceMapper::InteriorSinglePass):
-// the view ray from this front-surface fragment to the nearest back face (its view depth is in
-// the back-face target's alpha) is intersected with every crack sheet and air plane of
-// vtkIceSinglePassInterior's table; the air is composited over the ice colour back to front, the
-// cracks' highlights are added on top, as the paper's passes composite them.
+// The ice's cracks and air along the view ray from a front-surface point to the nearest back face
+// (its view depth is in the back-face target's alpha), intersected with every crack sheet and air
+// plane of vtkIceSinglePassInterior's table: the air is composited over the ice colour back to
+// front, the cracks' highlights are added on top, as the paper's passes composite them. Evaluated
+// in the ice's own fragment (InteriorSinglePass) or once per pixel by the screen-space step
+// (InteriorScreenSpace, vtkIceScreenInterior), which hands the surface its result.
 uniform sampler2D iceInteriorTable; // R: crack outlines (rows 0-2); then 4 texels per record
 uniform sampler3D iceInteriorBump;  // periodic noise gradient, 8 noise cells per repeat
 uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
@@ -63,17 +64,25 @@ float iceCrackOutline(int model, float angle)
 }
 
 //ICE::Functions
-// The nearest crack seen along the eye ray e (the single pass only: the paper passes' crack
-// program has no environment), at its normal n, as a sheet: it mirrors the environment
-// (`mirrored`: what lies along e reflected about n) by `share` of its reflectance, all of it at
-// glancing angles (iceCrackReflectance), and its rim (`edge`, 1 at the outline) scatters white
-// light, so its outline shows even where it mirrors little.
-vec3 iceCrackSheet(vec3 behind, vec3 e, vec3 n, float edge, float ior, float share,
+// The interior as what it does to the ice colour c behind it: c * keep + add, kept as
+// vec4(add, keep), since every layer mixes c towards its own colour by a scalar or adds light.
+// Layer `colour` over `t` with coverage `a`.
+void iceInteriorOver(inout vec4 t, vec3 colour, float a)
+{
+  t = vec4(mix(t.rgb, colour, a), t.a * (1.0 - a));
+}
+
+// The nearest crack seen along the eye ray e (the paper passes' crack program has no
+// environment), at its normal n, as a sheet over `t`: it mirrors the environment (`mirrored`:
+// what lies along e reflected about n) by `share` of its reflectance, all of it at glancing
+// angles (iceCrackReflectance), and its rim (`edge`, 1 at the outline) scatters white light, so
+// its outline shows even where it mirrors little.
+void iceCrackSheet(inout vec4 t, vec3 e, vec3 n, float edge, float ior, float share,
   vec3 mirrored)
 {
-  vec3 colour = mix(behind, mirrored, clamp(share * iceCrackReflectance(dot(e, n), ior), 0.0, 1.0));
+  iceInteriorOver(t, mirrored, clamp(share * iceCrackReflectance(dot(e, n), ior), 0.0, 1.0));
   float rim = smoothstep(1.0 - ICE_CRACK_EDGE_WIDTH, 1.0, edge);
-  return mix(colour, ICE_CORE_COLOUR, clamp(share * ICE_CRACK_EDGE * rim, 0.0, 1.0));
+  iceInteriorOver(t, ICE_CORE_COLOUR, clamp(share * ICE_CRACK_EDGE * rim, 0.0, 1.0));
 }
 
 // Highlights of VTK's lights on a crack at `positionWC` with normal n (facing the viewer).
@@ -84,19 +93,21 @@ vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
   return light;
 }
 
-// Adds the interior behind this fragment to `colour`; `backDepth` is the view depth of the
-// nearest back face (0: none).
-void iceInterior(inout vec3 colour, float backDepth)
+// The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
+// `viewDepth` in front of the camera) up to the nearest back face at view depth `backDepth`
+// (0: none), as vec4(add, keep) (iceInteriorOver).
+vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float backDepth)
 {
-  vec3 e = iceEyeVectorWC(icePositionWCVSOutput);
+  vec4 t = vec4(0.0, 0.0, 0.0, 1.0);
+  vec3 e = iceEyeVectorWC(positionWC);
   float along = dot(e, iceViewDirectionWC);
-  float sBack = (backDepth - iceViewDepth()) / max(along, 1.0e-6);
-  if (!gl_FrontFacing || backDepth <= 0.0 || sBack <= 0.0)
+  float sBack = (backDepth - viewDepth) / max(along, 1.0e-6);
+  if (backDepth <= 0.0 || sBack <= 0.0)
   {
-    return;
+    return t;
   }
   // The ray in model coordinates: s runs over world units from the front to the back face.
-  vec3 o = icePositionMCVSOutput;
+  vec3 o = positionMC;
   vec3 d = mat3(iceWCMCMatrix) * e;
 
   // The milky core behind the air: the air planes in front of it are seen through less of it.
@@ -105,9 +116,8 @@ void iceInterior(inout vec3 colour, float backDepth)
   if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
   {
     float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sBack, iceCoreDensity);
-    colour = iceMilkyCore(colour, depth);
+    iceInteriorOver(t, ICE_CORE_COLOUR, iceMilkyCoreCover(depth));
   }
-
   // The loop runs the same number of times for every fragment, and every step samples the atlas:
   // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform
   // control flow). A plane missed by this pixel's ray adds nothing (alpha 0). On llvmpipe, which
@@ -125,7 +135,7 @@ void iceInterior(inout vec3 colour, float backDepth)
       layer.a *= iceAirNearCore(coreOrigin + s * coreDirection,
         iceCoreOpticalDepth(coreOrigin, coreDirection, s, iceCoreDensity));
     }
-    colour = mix(colour, layer.rgb, hit ? layer.a : 0.0);
+    iceInteriorOver(t, layer.rgb, hit ? layer.a : 0.0);
   }
 
   // Cracks: a crack the ray misses (no crossing in the ice, or outside the outline) is skipped.
@@ -180,7 +190,7 @@ void iceInterior(inout vec3 colour, float backDepth)
       textureLod(iceInteriorBump, (o + s * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;
     n = normalize(n - iceCrackBumpStrength * (gradient - dot(gradient, n) * n));
     n = dot(n, e) > 0.0 ? -n : n;
-    highlights += iceCrackLight(n, -e, icePositionWCVSOutput + s * e);
+    highlights += iceCrackLight(n, -e, positionWC + s * e);
     if (s < nearest)
     {
       nearest = s;
@@ -190,11 +200,17 @@ void iceInterior(inout vec3 colour, float backDepth)
   }
   if (crackSeen && iceInteriorDebug == 0 && iceCrackReflection > 0.0)
   {
-    colour = iceCrackSheet(colour, e, nearestNormal, nearestEdge, 1.0 / iceRefractionRatio,
+    iceCrackSheet(t, e, nearestNormal, nearestEdge, 1.0 / iceRefractionRatio,
       iceCrackIntensity * iceCrackReflection, iceSurfaceEnvironmentColor(reflect(e, nearestNormal)));
   }
-  colour = iceInteriorDebug == ICE_DEBUG_CRACKS && crackSeen ? vec3(1.0, 0.0, 0.0)
-                                              : colour + iceCrackIntensity * highlights;
+  return iceInteriorDebug == ICE_DEBUG_CRACKS && crackSeen
+    ? vec4(1.0, 0.0, 0.0, 0.0)
+    : vec4(t.rgb + iceCrackIntensity * highlights, t.a);
 }
 //ICE::Call
-    iceInterior(gl_FragData[0].rgb, texelFetch(iceBackNormals, iceScreenTexel(), 0).a);
+    if (gl_FrontFacing)
+    {
+      vec4 iceInteriorResult = iceInteriorAlong(icePositionWCVSOutput, icePositionMCVSOutput,
+        iceViewDepth(), texelFetch(iceBackNormals, iceScreenTexel(), 0).a);
+      gl_FragData[0].rgb = gl_FragData[0].rgb * iceInteriorResult.a + iceInteriorResult.rgb;
+    }

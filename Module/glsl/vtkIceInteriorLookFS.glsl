@@ -15,11 +15,11 @@ vec4 iceAirLayer(vec4 bubble, float milkiness, bool debug)
     clamp(bubble.a * mix(0.45, 1.6, milkiness), 0.0, 1.0));
 }
 
-// The colour behind the milky core seen through it: the core's air scatters white light, as much
-// as its optical depth along the ray hides (1 - exp(-depth), which never reaches white).
-vec3 iceMilkyCore(vec3 behind, float opticalDepth)
+// How much of the colour behind the milky core its white hides: the core's air scatters white
+// light, as much as its optical depth along the ray hides (never all of it).
+float iceMilkyCoreCover(float opticalDepth)
 {
-  return mix(ICE_CORE_COLOUR, behind, exp(-opticalDepth));
+  return 1.0 - exp(-opticalDepth);
 }
 
 // How much of an air plane's coverage shows at `u` (the core's frame) with the core's optical depth

@@ -1,5 +1,6 @@
-//ICE::Dec
-in float iceFresnelFactorVSOutput;
+//ICE::Environment
+// The environment the surface refracts and mirrors (also the screen-space interior's, whose crack
+// sheets mirror it).
 uniform samplerCube iceEnvironment;
 // World direction to the environment texture's lookup direction, and how to show its colours as
 // the skybox of the same texture shows them: 0 as sampled, 1 gamma-corrected
@@ -28,6 +29,8 @@ vec3 iceSurfaceEnvironmentColor(vec3 directionWC)
   return iceEnvironmentColor(directionWC);
 }
 #endif
+//ICE::Dec
+in float iceFresnelFactorVSOutput;
 uniform float iceRefractionRatio;
 uniform vec3 iceTint;
 uniform vec3 iceAttenuationColor;

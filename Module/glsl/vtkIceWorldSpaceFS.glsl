@@ -1,8 +1,6 @@
-//ICE::Dec
-in vec3 icePositionWCVSOutput;
-in vec3 iceNormalWCVSOutput;
-in vec3 icePositionMCVSOutput;   // model coordinates: stable under camera and actor motion
-in vec3 iceNormalModelVSOutput;
+//ICE::Uniforms
+// The camera and the prop's matrices, for the ice surface's program and for the screen-space
+// interior's quad (vtkIceScreenInterior), which has no vertex outputs.
 uniform mat3 iceNormalMCWCMatrix;
 uniform mat4 iceWCMCMatrix; // world to (true) model coordinates: the actor's matrix inverted
 uniform mat4 iceVCWCMatrix; // view to world, for VTK's light uniforms (view space)
@@ -16,12 +14,6 @@ uniform ivec2 iceViewportOrigin; // window position of texel (0, 0) of viewport-
 vec3 iceEyeVectorWC(vec3 positionWC)
 {
   return iceParallelProjection != 0 ? iceViewDirectionWC : normalize(positionWC - iceCameraWC);
-}
-
-// Distance of this fragment in front of the camera along the view direction (-z in view space).
-float iceViewDepth()
-{
-  return dot(icePositionWCVSOutput - iceCameraWC, iceViewDirectionWC);
 }
 
 uniform vec4 iceDepthToWindow; // the camera projection's P22, P23, parallel (0/1), unused
@@ -38,4 +30,15 @@ float iceWindowDepth(float viewDepth)
 ivec2 iceScreenTexel()
 {
   return ivec2(gl_FragCoord.xy) - iceViewportOrigin;
+}
+//ICE::Dec
+in vec3 icePositionWCVSOutput;
+in vec3 iceNormalWCVSOutput;
+in vec3 icePositionMCVSOutput;   // model coordinates: stable under camera and actor motion
+in vec3 iceNormalModelVSOutput;
+
+// Distance of this fragment in front of the camera along the view direction (-z in view space).
+float iceViewDepth()
+{
+  return dot(icePositionWCVSOutput - iceCameraWC, iceViewDirectionWC);
 }

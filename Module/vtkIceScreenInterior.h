@@ -1,0 +1,54 @@
+// The screen-space step of vtkIceMapper::InteriorScreenSpace: an ice prop's cracks, air and milky
+// core evaluated once per pixel inside its projected bounding box, by a quad over a
+// viewport-sized target (RGBA float: what the interior adds to the ice colour and how much of it
+// it keeps), which the ice's surface program then applies (ICE_FRAME_SCREEN_INTERIOR). Its cost
+// follows the ice's pixels, not its triangles or their overdraw. vtkIcePass owns one and draws
+// it prop by prop before the scene, after the back faces. Inside the module.
+#ifndef vtkIceScreenInterior_h
+#define vtkIceScreenInterior_h
+
+#include "vtkIceScreenTarget.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+class vtkActor;
+class vtkIceFrame;
+class vtkIceMapper;
+class vtkOpenGLQuadHelper;
+class vtkRenderState;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkIceScreenInterior
+{
+public:
+  vtkIceScreenInterior();
+  ~vtkIceScreenInterior();
+
+  // Starts a frame: the first Draw clears the target where the ice props of `iceState` can be.
+  void Begin() { this->Cleared = false; }
+
+  // Evaluates the interior of `actor` (drawn by `mapper`) where its own nearest front face is
+  // the nearest of the ice so far: `frontDepth` holds that prop's depth interval, the frame its
+  // back faces.
+  void Draw(const vtkRenderState* iceState, vtkActor* actor, vtkIceMapper* mapper,
+    vtkIceFrame* frame, vtkTextureObject* frontDepth);
+
+  // What the ice's surface programs sample (the frame's ScreenInterior).
+  vtkTextureObject* GetTexture() const { return this->Target.GetColorTexture(); }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkIceScreenTarget Target;
+  // By fragment shader source: the lights and the roughness of the environment change it.
+  std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Quads;
+  bool Cleared = false;
+
+  vtkIceScreenInterior(const vtkIceScreenInterior&) = delete;
+  void operator=(const vtkIceScreenInterior&) = delete;
+};
+
+#endif

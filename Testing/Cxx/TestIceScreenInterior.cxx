@@ -1,0 +1,260 @@
+// The screen-space interior (InteriorScreenSpace) against the single pass it evaluates once per
+// pixel instead of once per fragment: the same look, so the same pictures up to the pixels along
+// the ice's silhouette (where the single pass shades fragments whose pixel centre lies outside
+// the ice) and float rounding. One behaviour per case: the default look on the block and the
+// teapot, a dynamic cube map, two ice props overlapping, the debug views, a frosted surface,
+// parallel projection and a renderer in a viewport. Each case also checks that the interior
+// shows (the picture without cracks and air differs) and that nothing differs away from the ice.
+#include "IceTestUtilities.h"
+#include "vtkIceBlockSource.h"
+#include "vtkIceCubeMapPass.h"
+#include "vtkIceCubeMapSource.h"
+#include "vtkIceMapper.h"
+#include "vtkIcePass.h"
+#include "vtkIceProperty.h"
+#include "vtkIceTeapotSource.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkNew.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSkybox.h"
+#include "vtkSphereSource.h"
+#include "vtkTexture.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const int Width = 320;
+const int Height = 240;
+
+// What a case changes in the scene: the mapper of the first (or only) ice, and the scene.
+struct Scene
+{
+  vtkRenderWindow* Window;
+  vtkRenderer* Renderer;
+  vtkIcePass* Pass;
+  std::vector<vtkIceMapper*> Mappers;
+};
+using Setup = std::function<void(Scene&)>;
+
+// The scene rendered with every ice mapper set to `method`; `interior` false: no cracks or air.
+IceTest::Image Render(
+  vtkPolyDataAlgorithm* source, int method, bool interior, const Setup& setup, int ice = 1)
+{
+  vtkSmartPointer<vtkTexture> sky = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetEnvironmentTexture(sky);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(sky);
+  renderer->AddActor(skybox);
+  vtkNew<vtkIcePass> pass;
+  renderer->SetPass(pass);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(Width, Height);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  IceTest::MessageRecorder* messages = IceTest::MessageRecorder::New();
+  Scene scene{ window, renderer, pass, {} };
+  std::vector<vtkSmartPointer<vtkIceMapper>> mappers;
+  for (int i = 0; i < ice; ++i)
+  {
+    auto mapper = vtkSmartPointer<vtkIceMapper>::New();
+    mapper->SetInputConnection(source->GetOutputPort());
+    mapper->SetInteriorMethod(method);
+    if (!interior)
+    {
+      mapper->GetIceProperty()->SetNumberOfCracks(0);
+      mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
+      mapper->GetIceProperty()->SetMilkyCoreRadius(0.0);
+    }
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    // A second ice beside and behind the first, overlapping it on screen.
+    actor->SetPosition(0.9 * i, 0.25 * i, -1.2 * i);
+    renderer->AddActor(actor);
+    messages->Watch(mapper);
+    messages->Watch(mapper->GetIceProperty());
+    mappers.push_back(mapper);
+    scene.Mappers.push_back(mapper);
+  }
+  messages->Watch(pass);
+  messages->Watch(renderer);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(2.2, 1.6, 3.4);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->ResetCamera();
+  camera->Zoom(1.3);
+  if (setup)
+  {
+    setup(scene);
+  }
+  renderer->ResetCameraClippingRange();
+  window->Render();
+  IceTest::Image image = IceTest::Capture(window);
+  for (const std::string& message : messages->Errors)
+  {
+    std::cout << "FAIL error: " << message << "\n";
+  }
+  for (const std::string& message : messages->Warnings)
+  {
+    std::cout << "FAIL warning: " << message << "\n";
+  }
+  const bool quiet = messages->Errors.empty() && messages->Warnings.empty();
+  messages->Delete();
+  if (!quiet)
+  {
+    image.RGB.clear();
+  }
+  return image;
+}
+
+// Screen-space against single pass on the same scene: over the ice (the pixels the interior
+// changes, the silhouette band of `edge` pixels left out) mean and largest difference bounded.
+bool Compare(const std::string& name, vtkPolyDataAlgorithm* source, const Setup& setup = nullptr,
+  int ice = 1, double maxMean = 0.5, int maxP99 = 8)
+{
+  const IceTest::Image clean = Render(source, vtkIceMapper::InteriorSinglePass, false, setup, ice);
+  const IceTest::Image single = Render(source, vtkIceMapper::InteriorSinglePass, true, setup, ice);
+  const IceTest::Image screen = Render(source, vtkIceMapper::InteriorScreenSpace, true, setup, ice);
+  if (clean.RGB.empty() || single.RGB.empty() || screen.RGB.empty())
+  {
+    return IceTest::Expect(false, name + ": rendered without a message");
+  }
+  std::vector<double> inside;
+  size_t interiorPixels = 0;
+  size_t outside = 0;
+  for (int y = 0; y < Height; ++y)
+  {
+    for (int x = 0; x < Width; ++x)
+    {
+      const int difference = IceTest::PixelDifference(single.At(x, y), screen.At(x, y));
+      const bool interior = IceTest::PixelDifference(clean.At(x, y), single.At(x, y)) > 0;
+      interiorPixels += interior ? 1 : 0;
+      if (interior)
+      {
+        inside.push_back(difference);
+      }
+      else
+      {
+        outside += difference > 2 ? 1 : 0;
+      }
+    }
+  }
+  const IceTest::Stats stats = IceTest::Summarize(inside);
+  std::ostringstream what;
+  what << name << ": screen-space against single pass over " << stats.Count
+       << " pixels the interior changes: mean " << stats.Mean << "/255, p99 " << stats.P99
+       << "/255, max " << stats.Max << "/255; " << outside
+       << " pixels elsewhere differ by more than 2/255";
+  return IceTest::Expect(interiorPixels > 2000 && stats.Mean <= maxMean && stats.P99 <= maxP99 &&
+      outside < 0.002 * Width * Height,
+    what.str());
+}
+
+bool DefaultLookBlock()
+{
+  vtkNew<vtkIceBlockSource> block;
+  return Compare("block", block);
+}
+
+bool DefaultLookTeapot()
+{
+  vtkNew<vtkIceTeapotSource> teapot;
+  return Compare("teapot", teapot);
+}
+
+bool DynamicCubeMap()
+{
+  vtkNew<vtkIceTeapotSource> teapot;
+  return Compare("dynamic cube map", teapot, [](Scene& scene) {
+    vtkNew<vtkIceCubeMapPass> cubeMaps;
+    cubeMaps->SetFaceSize(128);
+    scene.Pass->SetCubeMapPass(cubeMaps);
+    vtkNew<vtkSphereSource> ball;
+    ball->SetCenter(1.6, 0.0, 0.0);
+    ball->SetRadius(0.4);
+    vtkNew<vtkPolyDataMapper> ballMapper;
+    ballMapper->SetInputConnection(ball->GetOutputPort());
+    vtkNew<vtkActor> ballActor;
+    ballActor->SetMapper(ballMapper);
+    ballActor->GetProperty()->SetColor(0.9, 0.3, 0.1);
+    scene.Renderer->AddActor(ballActor);
+  });
+}
+
+bool TwoIce()
+{
+  vtkNew<vtkIceBlockSource> block;
+  return Compare(
+    "two ice", block,
+    [](Scene& scene) {
+      scene.Mappers[1]->GetIceProperty()->SetCrackSeed(7);
+      scene.Mappers[1]->GetIceProperty()->SetAirSeed(9);
+      scene.Renderer->ResetCamera();
+    },
+    2);
+}
+
+bool DebugViews()
+{
+  vtkNew<vtkIceBlockSource> block;
+  bool ok = Compare("cracks debug view", block,
+    [](Scene& scene) { scene.Mappers[0]->SetDebugView(vtkIceMapper::DebugCracksClipped); });
+  ok = Compare("air debug view", block,
+         [](Scene& scene) { scene.Mappers[0]->SetDebugView(vtkIceMapper::DebugAir); }) &&
+    ok;
+  return ok;
+}
+
+bool Frosted()
+{
+  vtkNew<vtkIceBlockSource> block;
+  return Compare(
+    "frosted", block, [](Scene& scene) { scene.Mappers[0]->GetIceProperty()->SetRoughness(0.3); });
+}
+
+bool Parallel()
+{
+  vtkNew<vtkIceTeapotSource> teapot;
+  return Compare("parallel projection", teapot, [](Scene& scene) {
+    scene.Renderer->GetActiveCamera()->ParallelProjectionOn();
+    scene.Renderer->ResetCamera();
+  });
+}
+
+bool Viewport()
+{
+  vtkNew<vtkIceTeapotSource> teapot;
+  return Compare("viewport", teapot, [](Scene& scene) {
+    scene.Renderer->SetViewport(0.3, 0.2, 1.0, 1.0);
+    scene.Renderer->ResetCamera();
+  });
+}
+}
+
+int TestIceScreenInterior(int argc, char* argv[])
+{
+  const IceTest::Cases cases = {
+    { "block", DefaultLookBlock },
+    { "teapot", DefaultLookTeapot },
+    { "dynamic-cube-map", DynamicCubeMap },
+    { "two-ice", TwoIce },
+    { "debug-views", DebugViews },
+    { "frosted", Frosted },
+    { "parallel", Parallel },
+    { "viewport", Viewport },
+  };
+  return IceTest::RunCases("TestIceScreenInterior", argc, argv, cases);
+}
