@@ -66,6 +66,12 @@ vtkTextureObject* vtkIceDepthIntervalPass::GetDepthTexture()
 }
 
 //------------------------------------------------------------------------------
+vtkTextureObject* vtkIceDepthIntervalPass::GetDepthBufferTexture()
+{
+  return this->Target->GetDepthTexture();
+}
+
+//------------------------------------------------------------------------------
 void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
@@ -87,7 +93,7 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
 
     this->PreRender(s);
     // Stage 0: nearest front face into R. Stage 1: farthest back face into G.
-    for (this->Stage = 0; this->Stage < 2; ++this->Stage)
+    for (this->Stage = 0; this->Stage < (this->FrontOnly ? 1 : 2); ++this->Stage)
     {
       const bool front = this->Stage == 0;
       state->vtkglColorMask(front, !front, GL_FALSE, GL_FALSE);
@@ -145,5 +151,6 @@ void vtkIceDepthIntervalPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DepthRange: " << this->DepthRange[0] << ", " << this->DepthRange[1] << "\n";
+  os << indent << "FrontOnly: " << this->FrontOnly << "\n";
   os << indent << "NumberOfGeometryPasses: " << this->NumberOfGeometryPasses << "\n";
 }

@@ -36,12 +36,29 @@ public:
   vtkTextureObject* GetDepthTexture();
 
   /**
+   * The depth buffer of the last Render (window depth of the last stage drawn: with FrontOnly,
+   * the nearest front faces', 1 where there are none). Null before the first.
+   */
+  vtkTextureObject* GetDepthBufferTexture();
+
+  /**
    * View-depth range of the props' bounding box in the last Render (nearest and farthest).
    */
   vtkGetVector2Macro(DepthRange, double);
 
+  ///@{
   /**
-   * Geometry passes rendered since creation (two per Render: front faces, back faces).
+   * Render the nearest front faces only (R); G then stays empty (-FLT_MAX). Default off. The
+   * screen-space interior needs only the front (vtkIceMapper::InteriorScreenSpace).
+   */
+  vtkSetMacro(FrontOnly, bool);
+  vtkGetMacro(FrontOnly, bool);
+  vtkBooleanMacro(FrontOnly, bool);
+  ///@}
+
+  /**
+   * Geometry passes rendered since creation (two per Render: front faces, back faces; one with
+   * FrontOnly).
    */
   vtkGetMacro(NumberOfGeometryPasses, vtkIdType);
 
@@ -59,6 +76,7 @@ protected:
   std::unique_ptr<vtkIceScreenTarget> Target; // RG32F: the result
   double DepthRange[2] = { 0.0, 1.0 };
   int Stage = 0;
+  bool FrontOnly = false;
   vtkIdType NumberOfGeometryPasses = 0;
 
 private:

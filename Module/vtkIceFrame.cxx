@@ -99,7 +99,9 @@ int vtkIceFrame::InputsOf(vtkProp* prop, int needs, bool exitPoint, bool depthDe
       inputs |= exitPoint ? ExitPointInput : TwoSidedInput;
     }
     inputs |= (needs & NeedsPathLength) ? PathLengthInput : 0;
-    inputs |= (needs & NeedsBackDepthForInterior) ? InteriorInput : 0;
+    // The single pass's interior; the screen-space one reads the back depth in its own step.
+    inputs |=
+      (needs & NeedsBackDepthForInterior) && !(needs & NeedsScreenInterior) ? InteriorInput : 0;
     inputs |= inputs ? BackNormalsInput : 0;
   }
   if (this->ScreenInterior && (needs & NeedsScreenInterior))

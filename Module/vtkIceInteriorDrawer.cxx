@@ -4,6 +4,7 @@
 #include "vtkIceInteriorLook.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePropertyUniforms.h"
+#include "vtkIceSinglePassInterior.h"
 
 #include "vtkPolyData.h"
 
@@ -62,14 +63,20 @@ void vtkIceInteriorDrawer::DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkAc
 }
 
 //------------------------------------------------------------------------------
-void vtkIceInteriorDrawer::BeginScreenInterior(
+const vtkIceSinglePassInterior* vtkIceInteriorDrawer::BeginScreenInterior(
   vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program)
 {
+  vtkPolyData* input = mapper->GetInput();
+  if (!input || !mapper->PrepareInput(input))
+  {
+    return nullptr;
+  }
   vtkIceMapper::SetCameraUniforms(program, ren, actor);
   vtkIcePropertyUniforms::Set(mapper->GetIceProperty(), program);
   mapper->BindEnvironment(ren, actor);
   mapper->SetEnvironmentUniforms(program);
   mapper->PrepareInterior(ren, actor, program);
+  return mapper->SinglePass.get();
 }
 
 //------------------------------------------------------------------------------

@@ -9,6 +9,7 @@
 
 class vtkActor;
 class vtkIceMapper;
+class vtkIceSinglePassInterior;
 class vtkRenderer;
 class vtkShaderProgram;
 
@@ -23,8 +24,9 @@ public:
   static void DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor);
 
   // The interior's table, textures, environment and look of `actor` ready for `program` (the
-  // screen-space interior's), until EndScreenInterior.
-  static void BeginScreenInterior(
+  // screen-space interior's), until EndScreenInterior; returns the interior prepared, or null
+  // (nothing readied, no EndScreenInterior) when the mapper has no input it draws.
+  static const vtkIceSinglePassInterior* BeginScreenInterior(
     vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program);
   static void EndScreenInterior(vtkIceMapper* mapper, vtkRenderer* ren);
 };

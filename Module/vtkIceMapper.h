@@ -375,18 +375,17 @@ public:
 
   ///@{
   /**
-   * How the cracks and air inside the ice are rendered (both need vtkIcePass).
-   * InteriorSinglePass (default): the ice's fragment shader intersects the view ray, from the
-   * front surface to the nearest back face (whose depth the back-face pass stores), with every
-   * crack sheet and air plane and composites them there: no depth-interval pass, no crack or air
-   * draw call. InteriorPaperPasses: the paper's method: the ice's depth interval is rendered,
-   * then the air planes (blended, back to front) and the crack sheets (their highlights added)
-   * are drawn over it. InteriorScreenSpace: the single pass's look, evaluated once per covered
-   * pixel by a screen-space step of vtkIcePass before the scene (inside the ice's projected
-   * bounding box, from the ice's own front depth and the back faces' depth) and applied by the
-   * ice's surface: its cost no longer grows with the ice's triangles and overdraw.
-   * Documentation/performance.md compares the three. DebugCracksUnclipped always uses the
-   * paper's passes.
+   * How the cracks and air inside the ice are rendered (all need vtkIcePass).
+   * InteriorScreenSpace (default): once per covered pixel by a screen-space step of vtkIcePass
+   * before the scene (inside the ice's projected bounding box, from the ice's own front faces
+   * and the back faces' depth, each pixel's ray intersected with the crack sheets and air planes
+   * its 16 x 16 pixel tile can meet) and applied by the ice's surface: its cost follows the ice's
+   * pixels, not its triangles or their overdraw. InteriorSinglePass: the same look in the ice's
+   * own fragment shader, once per fragment, with every crack and plane. InteriorPaperPasses: the
+   * paper's method: the ice's depth interval is rendered, then the air planes (blended, back to
+   * front) and the crack sheets (their highlights added) are drawn over it; no crack sheets'
+   * mirror and no milky core. Documentation/performance.md compares the three. DebugCracksUnclipped
+   * always uses the paper's passes.
    */
   vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorScreenSpace);
   vtkGetMacro(InteriorMethod, int);
@@ -487,7 +486,7 @@ protected:
   vtkSmartPointer<vtkIceProperty> IceProperty; // never null
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
-  int InteriorMethod = InteriorSinglePass;
+  int InteriorMethod = InteriorScreenSpace;
   int CrackClipping = DepthInterval;
   bool CracksPerturbRefraction = false;
   int DebugView = DebugOff;

@@ -110,6 +110,8 @@ vtkIcePass::vtkIcePass()
 
   this->BackfaceNormalPass = vtkIceBackfaceNormalPass::New();
   this->DepthIntervalPass = vtkIceDepthIntervalPass::New();
+  this->PropFrontPass = vtkIceDepthIntervalPass::New();
+  this->PropFrontPass->FrontOnlyOn();
 }
 
 //------------------------------------------------------------------------------
@@ -124,6 +126,7 @@ vtkIcePass::~vtkIcePass()
   this->VolumeStep->Delete();
   this->BackfaceNormalPass->Delete();
   this->DepthIntervalPass->Delete();
+  this->PropFrontPass->Delete();
   delete this->StepTimers;
   delete this->ScreenInterior;
   this->Frame->Delete();
@@ -267,34 +270,45 @@ void vtkIcePass::RenderIce(const vtkRenderState* iceState, int needs)
     {
       this->StopStep(InteriorStep);
     }
-    // Each prop's own depth interval replaced the one of all the ice.
-    this->Frame->DepthInterval = nullptr;
-    if (needs & vtkIceFrame::NeedsDepthIntervalBeforeScene)
-    {
-      this->RenderDepthInterval(iceState);
-    }
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkIcePass::RenderScreenInterior(const vtkRenderState* iceState)
 {
-  this->ScreenInterior->Begin();
+  std::vector<vtkProp*> props;
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];
-    vtkIceMapper* mapper = vtkIceMapperAccess::Of(prop);
-    if (!(vtkIceMapperAccess::FrameNeeds(mapper) & vtkIceFrame::NeedsScreenInterior))
+    if (vtkIceMapperAccess::FrameNeeds(vtkIceMapperAccess::Of(prop)) &
+      vtkIceFrame::NeedsScreenInterior)
     {
-      continue;
+      props.push_back(prop);
     }
+  }
+  // Where several ice props have one, each pixel takes the interior of the nearest: the nearest
+  // front faces of all the ice (the depth interval's R, rendered for the frame already or now).
+  vtkTextureObject* nearest = nullptr;
+  if (props.size() > 1)
+  {
+    if (!this->Frame->DepthInterval)
+    {
+      this->DepthIntervalPass->FrontOnlyOn();
+      this->RenderDepthInterval(iceState);
+      this->DepthIntervalPass->FrontOnlyOff();
+    }
+    nearest = this->Frame->DepthInterval;
+  }
+  this->ScreenInterior->Begin();
+  for (vtkProp* prop : props)
+  {
     vtkRenderState propState(iceState->GetRenderer());
     propState.SetPropArrayAndCount(&prop, 1);
     propState.SetFrameBuffer(iceState->GetFrameBuffer());
-    this->RenderDepthInterval(&propState);
-    this->ScreenInterior->Draw(
-      iceState, static_cast<vtkActor*>(prop), mapper, this->Frame, this->Frame->DepthInterval);
-    this->Frame->Textures.Release(this->Frame->DepthInterval);
+    this->PropFrontPass->Render(&propState);
+    this->ScreenInterior->Draw(iceState, static_cast<vtkActor*>(prop), vtkIceMapperAccess::Of(prop),
+      this->Frame, this->PropFrontPass, nearest);
+    this->Frame->Textures.Release(this->PropFrontPass->GetDepthTexture());
   }
   this->Frame->ScreenInterior = this->ScreenInterior->GetTexture();
 }
@@ -460,6 +474,7 @@ void vtkIcePass::ReleaseGraphicsResources(vtkWindow* w)
   this->Frame->Textures.ReleaseAll();
   this->BackfaceNormalPass->ReleaseGraphicsResources(w);
   this->DepthIntervalPass->ReleaseGraphicsResources(w);
+  this->PropFrontPass->ReleaseGraphicsResources(w);
   this->ScreenInterior->ReleaseGraphicsResources(w);
   if (this->StepTimers)
   {

@@ -173,6 +173,7 @@ protected:
   vtkIceBackfaceNormalPass* BackfaceNormalPass = nullptr;
   vtkIceCubeMapPass* CubeMapPass = nullptr;
   vtkIceDepthIntervalPass* DepthIntervalPass = nullptr;
+  vtkIceDepthIntervalPass* PropFrontPass = nullptr; // one prop's front faces (screen interior)
   int NumberOfIceProps = 0;
   bool MeasureStepTimes = false;
   vtkIceStepTimers* StepTimers = nullptr; // while MeasureStepTimes is on

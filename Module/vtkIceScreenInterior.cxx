@@ -1,5 +1,6 @@
 #include "vtkIceScreenInterior.h"
 
+#include "vtkIceDepthIntervalPass.h"
 #include "vtkIceFrame.h"
 #include "vtkIceInteriorDrawer.h"
 #include "vtkIceMapper.h"
@@ -23,8 +24,6 @@
 #include "vtkTextureObject.h"
 #include "vtkIceVTKCompat.h"
 
-#include <array>
-
 //------------------------------------------------------------------------------
 vtkIceScreenInterior::vtkIceScreenInterior() = default;
 
@@ -34,14 +33,16 @@ vtkIceScreenInterior::~vtkIceScreenInterior() = default;
 namespace
 {
 // The quad's fragment shader for the renderer's lights (VTK's declarations and light loop, as
-// the surface's) and an environment sampled rough or sharp.
-std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
+// the surface's), an environment sampled rough or sharp, and with or without the nearest ice's
+// front to compare with.
+std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough, bool nearest)
 {
   using vtkIceShaderSections::Get;
   const int complexity = renderer->GetLightingCount() > 0 ? renderer->GetLightingComplexity() : 0;
   std::string declarations = std::string(rough ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
-    renderer->GetLightingUniforms() + vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") +
-    Get(vtkIceSurfaceFS, "Environment") + "uniform float iceRefractionRatio;\n" +
+    (nearest ? "#define ICE_SCREEN_NEAREST\n" : "") + renderer->GetLightingUniforms() +
+    vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") + Get(vtkIceSurfaceFS, "Environment") +
+    "uniform float iceRefractionRatio;\n" + Get(vtkIceScreenInteriorFS, "Tiles") +
     vtkIceSinglePassInterior::Declarations() +
     vtkIceSinglePassInterior::Functions(complexity, renderer->GetLightingCount()) +
     Get(vtkIceScreenInteriorFS, "Dec");
@@ -50,30 +51,50 @@ std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
   vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", Get(vtkIceScreenInteriorFS, "Impl"));
   return fs;
 }
+
+// VTK's full-screen quad on the far plane (window depth 1): depth-tested against the prop's
+// front faces' depth, it runs the shader only where they are, before shading.
+std::string QuadVertexShader()
+{
+  std::string vs = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+  vtkShaderProgram::Substitute(
+    vs, "gl_Position = ndCoordIn;", "gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);");
+  return vs;
+}
 }
 
 //------------------------------------------------------------------------------
 void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
-  vtkIceMapper* mapper, vtkIceFrame* frame, vtkTextureObject* frontDepth)
+  vtkIceMapper* mapper, vtkIceFrame* frame, vtkIceDepthIntervalPass* front,
+  vtkTextureObject* nearest)
 {
   auto* renderer = static_cast<vtkOpenGLRenderer*>(iceState->GetRenderer());
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  vtkTextureObject* frontDepth = front->GetDepthTexture();
+  vtkTextureObject* frontWindowDepth = front->GetDepthBufferTexture();
+  if (!frontDepth || !frontWindowDepth)
+  {
+    return;
+  }
+  this->Target.UseDepthOf(frontWindowDepth);
   vtkIceScreenTarget::Drawing drawing(this->Target, iceState, 4);
   vtkOpenGLState* state = drawing.State;
   if (!this->Cleared)
   {
-    // Nothing added, all of the ice colour kept, no ice nearer than the far plane.
+    // Nothing added, all of the ice colour kept.
     drawing.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    drawing.ClearDepth(1.0);
     this->Cleared = true;
   }
-  state->vtkglDepthFunc(GL_LESS);
+  // The quad at the far plane passes where the front faces are nearer; their depth stays.
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglDepthFunc(GL_GREATER);
 
-  const std::string source = QuadShader(renderer, mapper->GetIceProperty()->GetRoughness() > 0.0);
+  const std::string source =
+    QuadShader(renderer, mapper->GetIceProperty()->GetRoughness() > 0.0, nearest != nullptr);
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
   if (!quad)
   {
-    quad.reset(new vtkOpenGLQuadHelper(window, nullptr, source.c_str(), ""));
+    quad.reset(new vtkOpenGLQuadHelper(window, QuadVertexShader().c_str(), source.c_str(), ""));
   }
   else
   {
@@ -98,10 +119,19 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
 
   frame->Textures.BindScreen(program, renderer, "iceDepthInterval", frontDepth);
   frame->Textures.BindScreen(program, renderer, "iceBackNormals", frame->BackfaceNormals);
+  frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest);
   frame->BindCubeMap(program, actor);
   renderer->UpdateLightingUniforms(program);
-  vtkIceInteriorDrawer::BeginScreenInterior(mapper, renderer, actor, program);
+  const vtkIceSinglePassInterior* interior =
+    vtkIceInteriorDrawer::BeginScreenInterior(mapper, renderer, actor, program);
+  if (!interior)
+  {
+    return;
+  }
+  this->Tiles.Update(renderer, actor, *interior, width, height, covered);
+  this->Tiles.SetUniforms(program);
   quad->Render();
+  this->Tiles.Finish();
   vtkIceInteriorDrawer::EndScreenInterior(mapper, renderer);
 }
 
@@ -113,5 +143,6 @@ void vtkIceScreenInterior::ReleaseGraphicsResources(vtkWindow* window)
     quad.second->ReleaseGraphicsResources(window);
   }
   this->Quads.clear();
+  this->Tiles.ReleaseGraphicsResources(window);
   this->Target.ReleaseGraphicsResources(window);
 }

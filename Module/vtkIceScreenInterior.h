@@ -7,6 +7,7 @@
 #ifndef vtkIceScreenInterior_h
 #define vtkIceScreenInterior_h
 
+#include "vtkIceInteriorTiles.h"
 #include "vtkIceScreenTarget.h"
 
 #include <map>
@@ -14,6 +15,7 @@
 #include <string>
 
 class vtkActor;
+class vtkIceDepthIntervalPass;
 class vtkIceFrame;
 class vtkIceMapper;
 class vtkOpenGLQuadHelper;
@@ -30,11 +32,13 @@ public:
   // Starts a frame: the first Draw clears the target where the ice props of `iceState` can be.
   void Begin() { this->Cleared = false; }
 
-  // Evaluates the interior of `actor` (drawn by `mapper`) where its own nearest front face is
-  // the nearest of the ice so far: `frontDepth` holds that prop's depth interval, the frame its
-  // back faces.
+  // Evaluates the interior of `actor` (drawn by `mapper`) where its front faces are, as `front`
+  // rendered them last (FrontOnly: their view depth, and their window depth, against which the
+  // quad is depth-tested so that no other pixel runs the shader), and where they are the nearest
+  // of the ice (`nearest`: the nearest front faces' view depth of all the ice; null when this is
+  // the only ice with a screen-space interior). The frame holds the back faces.
   void Draw(const vtkRenderState* iceState, vtkActor* actor, vtkIceMapper* mapper,
-    vtkIceFrame* frame, vtkTextureObject* frontDepth);
+    vtkIceFrame* frame, vtkIceDepthIntervalPass* front, vtkTextureObject* nearest);
 
   // What the ice's surface programs sample (the frame's ScreenInterior).
   vtkTextureObject* GetTexture() const { return this->Target.GetColorTexture(); }
@@ -43,6 +47,7 @@ public:
 
 private:
   vtkIceScreenTarget Target;
+  vtkIceInteriorTiles Tiles;
   // By fragment shader source: the lights and the roughness of the environment change it.
   std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Quads;
   bool Cleared = false;

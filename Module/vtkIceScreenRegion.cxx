@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace vtkIceScreenRegion
 {
@@ -22,6 +23,31 @@ void Covered(const vtkRenderState* s, int width, int height, int rect[4])
 //------------------------------------------------------------------------------
 void Covered(
   vtkRenderer* renderer, vtkProp* const* props, int count, int width, int height, int rect[4])
+{
+  std::vector<double> corners;
+  for (int i = 0; i < count; ++i)
+  {
+    const double* b = props[i]->GetBounds();
+    if (!b || !vtkMath::AreBoundsInitialized(b))
+    {
+      rect[0] = 0;
+      rect[1] = 0;
+      rect[2] = width;
+      rect[3] = height;
+      return;
+    }
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      corners.insert(
+        corners.end(), { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] });
+    }
+  }
+  Projected(renderer, corners.data(), count * 8, width, height, rect);
+}
+
+//------------------------------------------------------------------------------
+void Projected(
+  vtkRenderer* renderer, const double* points, int count, int width, int height, int rect[4])
 {
   rect[0] = 0;
   rect[1] = 0;
@@ -39,28 +65,19 @@ void Covered(
   double upper[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   for (int i = 0; i < count; ++i)
   {
-    const double* b = props[i]->GetBounds();
-    if (!b || !vtkMath::AreBoundsInitialized(b))
+    const double p[4] = { points[3 * i], points[3 * i + 1], points[3 * i + 2], 1.0 };
+    double clip[4];
+    worldToClip->MultiplyPoint(p, clip);
+    // At or behind the plane of the eye the points may project anywhere.
+    if (!(clip[3] > 1e-6 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
     {
       return;
     }
-    for (int corner = 0; corner < 8; ++corner)
+    for (int k = 0; k < 2; ++k)
     {
-      const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
-        1.0 };
-      double clip[4];
-      worldToClip->MultiplyPoint(p, clip);
-      // At or behind the plane of the eye the box may project anywhere.
-      if (!(clip[3] > 1e-6 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
-      {
-        return;
-      }
-      for (int k = 0; k < 2; ++k)
-      {
-        const double ndc = clip[k] / clip[3];
-        lower[k] = std::min(lower[k], ndc);
-        upper[k] = std::max(upper[k], ndc);
-      }
+      const double ndc = clip[k] / clip[3];
+      lower[k] = std::min(lower[k], ndc);
+      upper[k] = std::max(upper[k], ndc);
     }
   }
   if (count == 0)

@@ -16,6 +16,10 @@ namespace vtkIceScreenRegion
 void Covered(const vtkRenderState* s, int width, int height, int rect[4]);
 void Covered(
   vtkRenderer* renderer, vtkProp* const* props, int count, int width, int height, int rect[4]);
+// The same rectangle for `count` world points (x, y, z after each other): the pixels their
+// convex hull can cover.
+void Projected(
+  vtkRenderer* renderer, const double* points, int count, int width, int height, int rect[4]);
 
 // Tracks which part of a viewport-sized texture may hold anything but its clear value.
 class Tracker

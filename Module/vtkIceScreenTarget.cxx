@@ -27,7 +27,7 @@ void vtkIceScreenTarget::Prepare(
     this->ColorTexture->SetWrapT(vtkTextureObject::ClampToEdge);
     this->ColorTexture->Allocate2D(width, height, components, VTK_FLOAT);
   }
-  if (!this->DepthTexture)
+  if (!this->DepthTexture && !this->ExternalDepth)
   {
     this->DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
     this->DepthTexture->SetContext(window);
@@ -40,7 +40,10 @@ void vtkIceScreenTarget::Prepare(
     this->Attached = false;
   }
   this->ColorTexture->Resize(width, height);
-  this->DepthTexture->Resize(width, height);
+  if (this->DepthTexture)
+  {
+    this->DepthTexture->Resize(width, height);
+  }
   this->Width = width;
   this->Height = height;
 }
@@ -54,8 +57,14 @@ void vtkIceScreenTarget::Bind(vtkOpenGLState* state)
     // Once per framebuffer: the attachments stay (a resize keeps the textures' names).
     this->FrameBuffer->AddColorAttachment(0, this->ColorTexture);
     this->FrameBuffer->ActivateDrawBuffers(1);
-    this->FrameBuffer->AddDepthAttachment(this->DepthTexture);
     this->Attached = true;
+  }
+  vtkTextureObject* depth =
+    this->ExternalDepth ? this->ExternalDepth.Get() : this->DepthTexture.Get();
+  if (depth != this->AttachedDepth)
+  {
+    this->FrameBuffer->AddDepthAttachment(depth);
+    this->AttachedDepth = depth;
   }
   state->vtkglViewport(0, 0, this->Width, this->Height);
   state->vtkglScissor(0, 0, this->Width, this->Height);
@@ -69,6 +78,24 @@ void vtkIceScreenTarget::Unbind(vtkOpenGLState* state)
 vtkTextureObject* vtkIceScreenTarget::GetColorTexture() const
 {
   return this->ColorTexture;
+}
+
+vtkTextureObject* vtkIceScreenTarget::GetDepthTexture() const
+{
+  return this->DepthTexture;
+}
+
+void vtkIceScreenTarget::UseDepthOf(vtkTextureObject* depth)
+{
+  if (depth != this->ExternalDepth)
+  {
+    this->ExternalDepth = depth;
+    if (depth && this->DepthTexture)
+    {
+      // Its own is no longer attached; a null later makes it again.
+      this->DepthTexture = nullptr;
+    }
+  }
 }
 
 void vtkIceScreenTarget::ReleaseGraphicsResources(vtkWindow* window)
@@ -87,6 +114,9 @@ void vtkIceScreenTarget::ReleaseGraphicsResources(vtkWindow* window)
   this->FrameBuffer = nullptr;
   this->ColorTexture = nullptr;
   this->DepthTexture = nullptr;
+  this->ExternalDepth = nullptr;
+  this->AttachedDepth = nullptr;
+  this->Attached = false;
 }
 
 void vtkIceScreenTarget::Cull(unsigned int face)

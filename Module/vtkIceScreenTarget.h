@@ -33,6 +33,11 @@ public:
   void Unbind(vtkOpenGLState* state);
 
   vtkTextureObject* GetColorTexture() const;
+  vtkTextureObject* GetDepthTexture() const;
+
+  // Attaches `depth` (another target's depth texture, of the same size) instead of a depth
+  // texture of this target's own; null goes back to its own. Set before a Drawing.
+  void UseDepthOf(vtkTextureObject* depth);
 
   // While a Drawing of this target lives: culls `face` (GL_FRONT or GL_BACK) for the draws that
   // follow, until the next vtkProperty::Render sets the actor's own culling. Passes call it from
@@ -81,7 +86,9 @@ private:
   vtkSmartPointer<vtkTextureObject> DepthTexture;
   int Width = 0;
   int Height = 0;
-  bool Attached = false;               // the textures are attached to FrameBuffer
+  bool Attached = false; // the textures are attached to FrameBuffer
+  vtkSmartPointer<vtkTextureObject> ExternalDepth;
+  vtkTextureObject* AttachedDepth = nullptr;
   vtkIceScreenRegion::Tracker Cleared; // what of ColorTexture may not hold the clear colour
   Drawing* Active = nullptr;
 

@@ -48,6 +48,16 @@ void StoreInverse(vtkTransform* placement, float* record)
   }
 }
 
+// The corners of the box [-r, r]^2 x [z0, z1] of a record's own frame, placed in the model.
+void StoreCorners(vtkTransform* placement, double r, const double z[2], double* corners)
+{
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double local[3] = { corner & 1 ? r : -r, corner & 2 ? r : -r, z[(corner >> 2) & 1] };
+    placement->TransformPoint(local, corners + 3 * corner);
+  }
+}
+
 // Periodic value noise: lattice values of `cells` per repeat, smoothly interpolated.
 double PeriodicValueNoise(const double p[3], int cells, std::uint32_t seed)
 {
@@ -201,6 +211,8 @@ void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
     }
   }
   this->CrackRecords.assign(16 * static_cast<size_t>(settings.Cracks), 0.0f);
+  this->CrackCorners.assign(24 * static_cast<size_t>(settings.Cracks), 0.0);
+  this->AirCorners.assign(24 * static_cast<size_t>(settings.AirPlanes), 0.0);
   for (int i = 0; i < settings.Cracks; ++i)
   {
     vtkNew<vtkTransform> placement;
@@ -211,6 +223,14 @@ void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
     record[12] = static_cast<float>(shape.Bowl + shape.Saddle);
     record[13] = static_cast<float>(shape.Bowl - shape.Saddle);
     record[14] = static_cast<float>(i % 3);
+    // The box around the sheet z = a x^2 + b y^2 inside its outline, in the crack's frame.
+    const float* outline = &this->Outlines[static_cast<size_t>(i % 3) * OutlineSamples];
+    const double r = *std::max_element(outline, outline + OutlineSamples);
+    const double a = record[12] * r * r;
+    const double b = record[13] * r * r;
+    const double z[2] = { std::min(0.0, a) + std::min(0.0, b),
+      std::max(0.0, a) + std::max(0.0, b) };
+    StoreCorners(placement, r, z, &this->CrackCorners[24 * static_cast<size_t>(i)]);
   }
   this->AirRecords.assign(16 * static_cast<size_t>(settings.AirPlanes), 0.0f);
   this->AirCenters.assign(3 * static_cast<size_t>(settings.AirPlanes), 0.0);
@@ -225,6 +245,8 @@ void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
     record[12] = static_cast<float>(tile[0]);
     record[13] = static_cast<float>(tile[1]);
     placement->GetPosition(&this->AirCenters[3 * static_cast<size_t>(i)]);
+    const double flat[2] = { 0.0, 0.0 };
+    StoreCorners(placement, 1.0, flat, &this->AirCorners[24 * static_cast<size_t>(i)]);
   }
   this->AirOrder.clear();
 }
@@ -369,4 +391,13 @@ void vtkIceSinglePassInterior::ReleaseGraphicsResources(vtkWindow* window)
     this->Bump = nullptr;
   }
   this->Uploaded = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceSinglePassInterior::GetCorners(int position, double corners[24]) const
+{
+  const double* from = position < this->Current.Cracks
+    ? &this->CrackCorners[24 * static_cast<size_t>(position)]
+    : &this->AirCorners[24 * static_cast<size_t>(this->AirOrder[position - this->Current.Cracks])];
+  std::copy(from, from + 24, corners);
 }

@@ -60,6 +60,20 @@ public:
   void Finish(vtkRenderer* renderer);
   void ReleaseGraphicsResources(vtkWindow* window);
 
+  // The records in the table's order (cracks, then air planes back to front) since the last
+  // Prepare, and the model-space box around record `position`'s sheet or plane (8 corners).
+  int GetNumberOfCracks() const { return this->Current.Cracks; }
+  // The air planes the shader reads (none without the bubble atlas), between Prepare and Finish.
+  int GetNumberOfAirPlanes() const
+  {
+    return this->ActiveAtlas ? static_cast<int>(this->AirOrder.size()) : 0;
+  }
+  int GetNumberOfRecords() const
+  {
+    return this->Current.Cracks + static_cast<int>(this->AirOrder.size());
+  }
+  void GetCorners(int position, double corners[24]) const;
+
 private:
   void Place(vtkPolyData* ice, const Settings& settings);
   void Order(const double eye[3]);
@@ -68,11 +82,13 @@ private:
   vtkPolyData* PlacedFor = nullptr;
   vtkMTimeType PlacedTime = 0;
   bool Placed = false;
-  std::vector<float> Outlines;     // 3 models x 64 radii
-  std::vector<float> CrackRecords; // 16 floats each
-  std::vector<float> AirRecords;   // 16 floats each, in placement order
-  std::vector<double> AirCenters;  // 3 each
-  std::vector<vtkIdType> AirOrder; // back to front
+  std::vector<float> Outlines;      // 3 models x 64 radii
+  std::vector<float> CrackRecords;  // 16 floats each
+  std::vector<float> AirRecords;    // 16 floats each, in placement order
+  std::vector<double> AirCenters;   // 3 each
+  std::vector<vtkIdType> AirOrder;  // back to front
+  std::vector<double> CrackCorners; // 24 each: the box around the sheet, model coordinates
+  std::vector<double> AirCorners;   // 24 each, in placement order
   bool Uploaded = false;
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> Bump;

@@ -23,6 +23,15 @@ uniform float iceCoreDensity;        // 0: no core
 const int iceOutlineSamples = 64; // per crack model, over the full turn
 const int iceRecordsPerRow = 16;
 
+// The records this pixel's ray may meet: every one, or (the screen-space interior) its tile's
+// list (vtkIceInteriorTiles).
+#ifndef ICE_INTERIOR_TILES
+int iceCracksHere() { return iceCrackCount; }
+int iceCrackRecord(int j) { return j; }
+int iceAirHere() { return iceAirCount; }
+int iceAirRecord(int j) { return iceCrackCount + j; }
+#endif
+
 vec4 iceInteriorTexel(int record, int texel)
 {
   return texelFetch(iceInteriorTable,
@@ -122,9 +131,10 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float b
   // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform
   // control flow). A plane missed by this pixel's ray adds nothing (alpha 0). On llvmpipe, which
   // executes both sides of a branch, this is also the cheapest form.
-  for (int k = 0; k < iceAirCount; ++k)
+  int airHere = iceAirHere();
+  for (int k = 0; k < airHere; ++k)
   {
-    IceLocalRay ray = iceLocalRay(iceCrackCount + k, o, d);
+    IceLocalRay ray = iceLocalRay(iceAirRecord(k), o, d);
     float s = -ray.origin.z / ray.direction.z;
     vec2 xy = ray.origin.xy + s * ray.direction.xy;
     bool hit = s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
@@ -148,11 +158,12 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float b
   float nearest = sBack;
   vec3 nearestNormal = vec3(0.0);
   float nearestEdge = 0.0;
-  for (int k = 0; k < iceCrackCount; ++k)
+  int cracksHere = iceCracksHere();
+  for (int j = 0; j < cracksHere; ++j)
   {
     // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
     // shallow sheet at most once inside the outline in practice: the nearer root in the ice.
-    IceLocalRay ray = iceLocalRay(k, o, d);
+    IceLocalRay ray = iceLocalRay(iceCrackRecord(j), o, d);
     float a = ray.shape.x;
     float b = ray.shape.y;
     vec3 p = ray.origin;

@@ -8,22 +8,50 @@ uniform sampler2D iceScreenInterior;
       gl_FragData[0].rgb =
         gl_FragData[0].rgb * iceScreenInteriorResult.a + iceScreenInteriorResult.rgb;
     }
+//ICE::Tiles
+// The records of this pixel's tile (vtkIceInteriorTiles): the lists one after the other, each
+// its crack count, its plane count, then their records' positions in the table.
+#define ICE_INTERIOR_TILES
+uniform sampler2D iceTileLists;
+uniform ivec2 iceTileOrigin; // pixel of tile (0, 0)
+uniform int iceTilesAcross;
+uniform int iceTileStride;   // texels per list
+const int iceTileSize = 16;
+const int iceTileRowTexels = 4096;
+int iceTileStart = 0;
+
+int iceTileEntry(int i)
+{
+  int at = iceTileStart + i;
+  return int(texelFetch(iceTileLists, ivec2(at % iceTileRowTexels, at / iceTileRowTexels), 0).r);
+}
+int iceCracksHere() { return iceTileEntry(0); }
+int iceCrackRecord(int j) { return iceTileEntry(2 + j); }
+int iceAirHere() { return iceTileEntry(1); }
+int iceAirRecord(int j) { return iceTileEntry(2 + iceTileEntry(0) + j); }
 //ICE::Dec
 // The screen-space interior (vtkIceScreenInterior): one ice prop's interior once per pixel, from
 // its own nearest front face (the view depth in the depth interval's R; FLT_MAX: none) to the
 // nearest back face of the ice (the back-face target's alpha), as the single pass evaluates it
-// per fragment; written as vec4(add, keep) at the front face's window depth, so that where ice
-// props overlap the nearest one's interior stays.
+// per fragment, written as vec4(add, keep). The quad reaches only the prop's front faces (depth
+// test); where ice props overlap, only the nearest one's interior is written.
 uniform sampler2D iceDepthInterval;
 uniform sampler2D iceBackNormals;
 uniform mat4 iceDCWCMatrix; // normalised device coordinates to world
+#ifdef ICE_SCREEN_NEAREST
+uniform sampler2D iceNearestFront; // R: the nearest front faces' view depth of all the ice
+#endif
 //ICE::Impl
   ivec2 texel = iceScreenTexel();
   float front = texelFetch(iceDepthInterval, texel, 0).r;
-  if (front > 1.0e30)
+#ifdef ICE_SCREEN_NEAREST
+  if (front > texelFetch(iceNearestFront, texel, 0).r)
   {
     discard;
   }
+#endif
+  ivec2 tile = (ivec2(gl_FragCoord.xy) - iceTileOrigin) / iceTileSize;
+  iceTileStart = (tile.y * iceTilesAcross + tile.x) * iceTileStride;
   // The front face's point: on the pixel's ray through the near and far planes, at its depth.
   vec2 ndc = 2.0 * texCoord - 1.0; // the quad's texture coordinates: the pixel centre's
   vec4 nearWC = iceDCWCMatrix * vec4(ndc, -1.0, 1.0);
@@ -36,4 +64,3 @@ uniform mat4 iceDCWCMatrix; // normalised device coordinates to world
   vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
   gl_FragData[0] = iceInteriorAlong(
     positionWC, positionMC, front, texelFetch(iceBackNormals, texel, 0).a);
-  gl_FragDepth = clamp(iceWindowDepth(front), 0.0, 1.0);

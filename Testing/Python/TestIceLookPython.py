@@ -58,9 +58,10 @@ def test_ranges_are_the_librarys():
 def test_choices_in_enum_order():
     interior = Look.FindSetting("interior")
     names = [Look.GetChoice(interior, j) for j in range(Look.GetNumberOfChoices(interior))]
-    check(names == ["paper-passes", "single-pass"], names)
+    check(names == ["paper-passes", "single-pass", "screen-space"], names)
     check(names.index("single-pass") == vtkice.vtkIceMapper.InteriorSinglePass)
-    check(Look.GetChoice(interior, 2) is None)
+    check(names.index("screen-space") == vtkice.vtkIceMapper.InteriorScreenSpace)
+    check(Look.GetChoice(interior, 3) is None)
     check(Look.GetNumberOfChoices(Look.FindSetting("eta")) == 0)
 
 

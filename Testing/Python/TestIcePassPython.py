@@ -59,18 +59,22 @@ def main():
     check(changed >= 6.0, "two-sided refraction must change the ice")
     check(restored == 0.0, "TwoSidedRefractionOff must give the one-sided image")
 
-    # The interior methods from Python: cracks and air in the ice's own shader (default) or by the
-    # paper's passes; both change the ice, and differently.
+    # The interior methods from Python: cracks and air once per pixel (default), in the ice's own
+    # shader or by the paper's passes; all change the ice, the paper's passes differently.
     mapper.TwoSidedRefractionOn()
-    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass)
+    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorScreenSpace)
     mapper.SetNumberOfCracks(2)
     mapper.SetNumberOfAirPlanes(19)
-    single = grab(window)
+    screen = grab(window)
     mapper.SetInteriorMethodToPaperPasses()
     check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses)
     paper = grab(window)
     mapper.SetInteriorMethodToSinglePass()
     check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass)
+    single = grab(window)
+    check(mean_difference(screen, single, *box) < 0.5, "screen space and single pass look alike")
+    mapper.SetInteriorMethodToScreenSpace()
+    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorScreenSpace)
     interior = (mean_difference(two_sided, paper, *box), mean_difference(two_sided, single, *box),
                 mean_difference(paper, single, *box))
     print("interior: paper passes %.2f/255, single pass %.2f/255 from the clear ice, %.2f/255 apart"

@@ -1,0 +1,144 @@
+#include "vtkIceInteriorTiles.h"
+
+#include "vtkIceScreenRegion.h"
+#include "vtkIceSinglePassInterior.h"
+
+#include "vtkActor.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <array>
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
+  const vtkIceSinglePassInterior& interior, int width, int height, const int rect[4])
+{
+  // Tiles from a multiple of TileSize below the rectangle, so that 2 x 2 pixel quads (whose
+  // derivatives the air's texture lookups take) never straddle two tiles.
+  this->Origin[0] = rect[0] - rect[0] % TileSize;
+  this->Origin[1] = rect[1] - rect[1] % TileSize;
+  this->TilesAcross = std::max(1, (rect[2] - this->Origin[0] + TileSize - 1) / TileSize);
+  this->TilesUp = std::max(1, (rect[3] - this->Origin[1] + TileSize - 1) / TileSize);
+  const int tiles = this->TilesAcross * this->TilesUp;
+
+  // Each record's tiles: its box projected, in tile units, clamped to the grid.
+  const int records = interior.GetNumberOfRecords();
+  const int cracks = interior.GetNumberOfCracks();
+  const int air = interior.GetNumberOfAirPlanes();
+  std::vector<std::array<int, 4>> reach;
+  std::vector<int> listed;
+  vtkMatrix4x4* modelToWorld = actor->GetMatrix();
+  for (int position = 0; position < records; ++position)
+  {
+    if (position >= cracks + air)
+    {
+      break;
+    }
+    double corners[24];
+    interior.GetCorners(position, corners);
+    for (int c = 0; c < 8; ++c)
+    {
+      double p[4] = { corners[3 * c], corners[3 * c + 1], corners[3 * c + 2], 1.0 };
+      modelToWorld->MultiplyPoint(p, p);
+      std::copy(p, p + 3, corners + 3 * c);
+    }
+    int covered[4];
+    vtkIceScreenRegion::Projected(renderer, corners, 8, width, height, covered);
+    std::array<int, 4> tileRange = {
+      std::max(0, (covered[0] - this->Origin[0]) / TileSize),
+      std::max(0, (covered[1] - this->Origin[1]) / TileSize),
+      std::min(this->TilesAcross, (covered[2] - this->Origin[0] + TileSize - 1) / TileSize),
+      std::min(this->TilesUp, (covered[3] - this->Origin[1] + TileSize - 1) / TileSize),
+    };
+    reach.push_back(tileRange);
+    listed.push_back(position);
+  }
+
+  // Count first (the stride is the longest list), then fill.
+  std::vector<int> crackCounts(static_cast<size_t>(tiles), 0);
+  std::vector<int> airCounts(static_cast<size_t>(tiles), 0);
+  for (size_t r = 0; r < reach.size(); ++r)
+  {
+    std::vector<int>& counts = listed[r] < cracks ? crackCounts : airCounts;
+    for (int ty = reach[r][1]; ty < reach[r][3]; ++ty)
+    {
+      for (int tx = reach[r][0]; tx < reach[r][2]; ++tx)
+      {
+        ++counts[static_cast<size_t>(ty) * this->TilesAcross + tx];
+      }
+    }
+  }
+  int longest = 0;
+  this->Entries = 0;
+  for (int t = 0; t < tiles; ++t)
+  {
+    longest = std::max(longest, crackCounts[t] + airCounts[t]);
+    this->Entries += crackCounts[t] + airCounts[t];
+  }
+  this->Stride = 2 + longest;
+  // The lists one after the other, in rows of RowTexels (within every GPU's width limit).
+  const size_t total = static_cast<size_t>(tiles) * this->Stride;
+  const int rows = static_cast<int>((total + RowTexels - 1) / RowTexels);
+  this->Texels.assign(static_cast<size_t>(rows) * RowTexels, 0.0f);
+  std::vector<int> filled(static_cast<size_t>(tiles), 0);
+  for (int t = 0; t < tiles; ++t)
+  {
+    this->Texels[static_cast<size_t>(t) * this->Stride] = static_cast<float>(crackCounts[t]);
+    this->Texels[static_cast<size_t>(t) * this->Stride + 1] = static_cast<float>(airCounts[t]);
+  }
+  // Records in the table's order, so each tile's air stays back to front.
+  for (size_t r = 0; r < reach.size(); ++r)
+  {
+    for (int ty = reach[r][1]; ty < reach[r][3]; ++ty)
+    {
+      for (int tx = reach[r][0]; tx < reach[r][2]; ++tx)
+      {
+        const size_t t = static_cast<size_t>(ty) * this->TilesAcross + tx;
+        this->Texels[t * this->Stride + 2 + filled[t]++] = static_cast<float>(listed[r]);
+      }
+    }
+  }
+
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  if (!this->Lists || this->Lists->GetContext() != window)
+  {
+    this->Lists = vtkSmartPointer<vtkTextureObject>::New();
+    this->Lists->SetContext(window);
+    this->Lists->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Lists->SetMagnificationFilter(vtkTextureObject::Nearest);
+  }
+  this->Lists->Create2DFromRaw(RowTexels, rows, 1, VTK_FLOAT, this->Texels.data());
+  this->Lists->Activate();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTiles::SetUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformi("iceTileLists", this->Lists->GetTextureUnit());
+  program->SetUniform2i("iceTileOrigin", this->Origin);
+  program->SetUniformi("iceTilesAcross", this->TilesAcross);
+  program->SetUniformi("iceTileStride", this->Stride);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTiles::Finish()
+{
+  if (this->Lists)
+  {
+    this->Lists->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTiles::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Lists)
+  {
+    this->Lists->ReleaseGraphicsResources(window);
+    this->Lists = nullptr;
+  }
+}

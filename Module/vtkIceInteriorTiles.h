@@ -1,0 +1,51 @@
+// Which of an ice prop's cracks and air planes each screen tile's rays can meet, for the
+// screen-space interior (vtkIceScreenInterior): the box around each record's sheet or plane is
+// projected with the camera, and each tile of 16 x 16 pixels lists the records whose projection
+// reaches it, in the table's order (cracks, then planes back to front). A pixel's ray then
+// intersects only its tile's records: a crack or plane no ray of a tile can reach costs that
+// tile nothing. Built on the CPU for every draw (the camera and the ice move), uploaded as one
+// float texture. Inside the module.
+#ifndef vtkIceInteriorTiles_h
+#define vtkIceInteriorTiles_h
+
+#include "vtkSmartPointer.h"
+
+#include <vector>
+
+class vtkActor;
+class vtkIceSinglePassInterior;
+class vtkRenderer;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkIceInteriorTiles
+{
+public:
+  static const int TileSize = 16;    // pixels; even, so no 2 x 2 pixel quad straddles two tiles
+  static const int RowTexels = 4096; // as iceTileRowTexels
+
+  // The lists for `interior`'s records (prepared for `actor`) in a viewport of `width` x
+  // `height` pixels, inside `rect` (the prop's covered pixels, { x0, y0, x1, y1 }); uploaded and
+  // activated until Finish.
+  void Update(vtkRenderer* renderer, vtkActor* actor, const vtkIceSinglePassInterior& interior,
+    int width, int height, const int rect[4]);
+  void SetUniforms(vtkShaderProgram* program);
+  void Finish();
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  // Of the last Update: records listed over all tiles, and tiles.
+  long long GetNumberOfEntries() const { return this->Entries; }
+  int GetNumberOfTiles() const { return this->TilesAcross * this->TilesUp; }
+
+private:
+  vtkSmartPointer<vtkTextureObject> Lists;
+  int Origin[2] = { 0, 0 }; // pixel of tile (0, 0)'s lower left corner
+  int TilesAcross = 0;
+  int TilesUp = 0;
+  int Stride = 0; // texels per tile: the two counts, then the records
+  long long Entries = 0;
+  std::vector<float> Texels;
+};
+
+#endif
