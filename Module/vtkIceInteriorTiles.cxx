@@ -4,6 +4,7 @@
 #include "vtkIceSinglePassInterior.h"
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
@@ -12,6 +13,85 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+
+namespace
+{
+// The convex hull (counter-clockwise) of the projected corners of a record's box, in pixels; empty
+// when a corner is at or behind the plane of the eye (the box then reaches its whole bounding
+// rectangle).
+std::vector<std::array<double, 2>> ProjectedHull(
+  vtkMatrix4x4* worldToClip, const double corners[24], int width, int height)
+{
+  std::vector<std::array<double, 2>> points;
+  for (int c = 0; c < 8; ++c)
+  {
+    const double p[4] = { corners[3 * c], corners[3 * c + 1], corners[3 * c + 2], 1.0 };
+    double clip[4];
+    worldToClip->MultiplyPoint(p, clip);
+    if (!(clip[3] > 1e-6 * (std::abs(clip[0]) + std::abs(clip[1]) + std::abs(clip[2]))))
+    {
+      return {};
+    }
+    points.push_back(
+      { 0.5 * (clip[0] / clip[3] + 1.0) * width, 0.5 * (clip[1] / clip[3] + 1.0) * height });
+  }
+  std::sort(points.begin(), points.end());
+  const auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a,
+                       const std::array<double, 2>& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  std::vector<std::array<double, 2>> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) // lower chain
+  {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) // upper chain
+  {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  hull.resize(k > 1 ? k - 1 : k);
+  return hull;
+}
+
+// Whether the pixels [x0, x1] x [y0, y1] (a tile, with a pixel of margin) may meet the convex
+// polygon `hull`: no edge of the polygon has the whole rectangle outside it.
+bool Meets(
+  const std::vector<std::array<double, 2>>& hull, double x0, double y0, double x1, double y1)
+{
+  if (hull.size() < 3)
+  {
+    return true; // degenerate (edge-on): its bounding rectangle decides
+  }
+  for (size_t i = 0; i < hull.size(); ++i)
+  {
+    const std::array<double, 2>& a = hull[i];
+    const std::array<double, 2>& b = hull[(i + 1) % hull.size()];
+    bool allOutside = true;
+    for (const double x : { x0, x1 })
+    {
+      for (const double y : { y0, y1 })
+      {
+        allOutside = allOutside && (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) < 0.0;
+      }
+    }
+    if (allOutside)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
 
 //------------------------------------------------------------------------------
 void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
@@ -25,7 +105,11 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
   this->TilesUp = std::max(1, (rect[3] - this->Origin[1] + TileSize - 1) / TileSize);
   const int tiles = this->TilesAcross * this->TilesUp;
 
-  // Each record's tiles: its box projected, in tile units, clamped to the grid.
+  // Each record's tiles: those of its box's projected bounding rectangle (in tile units, clamped
+  // to the grid) that its projected hull reaches.
+  vtkMatrix4x4* worldToClip = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  std::vector<std::vector<std::array<double, 2>>> hulls;
   const int records = interior.GetNumberOfRecords();
   const int cracks = interior.GetNumberOfCracks();
   const int air = interior.GetNumberOfAirPlanes();
@@ -56,7 +140,13 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
     };
     reach.push_back(tileRange);
     listed.push_back(position);
+    hulls.push_back(ProjectedHull(worldToClip, corners, width, height));
   }
+  const auto reaches = [&](size_t r, int tx, int ty) {
+    const double x0 = this->Origin[0] + tx * TileSize - 1.0;
+    const double y0 = this->Origin[1] + ty * TileSize - 1.0;
+    return Meets(hulls[r], x0, y0, x0 + TileSize + 2.0, y0 + TileSize + 2.0);
+  };
 
   // Count first (the stride is the longest list), then fill.
   std::vector<int> crackCounts(static_cast<size_t>(tiles), 0);
@@ -68,7 +158,7 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
     {
       for (int tx = reach[r][0]; tx < reach[r][2]; ++tx)
       {
-        ++counts[static_cast<size_t>(ty) * this->TilesAcross + tx];
+        counts[static_cast<size_t>(ty) * this->TilesAcross + tx] += reaches(r, tx, ty) ? 1 : 0;
       }
     }
   }
@@ -98,7 +188,10 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
       for (int tx = reach[r][0]; tx < reach[r][2]; ++tx)
       {
         const size_t t = static_cast<size_t>(ty) * this->TilesAcross + tx;
-        this->Texels[t * this->Stride + 2 + filled[t]++] = static_cast<float>(listed[r]);
+        if (reaches(r, tx, ty))
+        {
+          this->Texels[t * this->Stride + 2 + filled[t]++] = static_cast<float>(listed[r]);
+        }
       }
     }
   }
