@@ -224,6 +224,15 @@ vtkSmartPointer<vtkTexture> MakeCubeMap(int pattern, int faceSize)
   return texture;
 }
 
+void AddSky(vtkRenderer* renderer, int faceSize)
+{
+  vtkSmartPointer<vtkTexture> sky = MakeCubeMap(vtkIceCubeMapSource::Sky, faceSize);
+  renderer->SetEnvironmentTexture(sky);
+  vtkNew<vtkSkybox> skybox;
+  skybox->SetTexture(sky);
+  renderer->AddActor(skybox);
+}
+
 void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double direction[3])
 {
   vtkCamera* camera = renderer->GetActiveCamera();

@@ -69,6 +69,9 @@ void UseCleanOptics(vtkIceMapper* mapper);
 // A cube-map texture from vtkIceCubeMapSource.
 vtkSmartPointer<vtkTexture> MakeCubeMap(int pattern, int faceSize);
 
+// The sky (vtkIceCubeMapSource::Sky) as `renderer`'s environment texture and its skybox.
+void AddSky(vtkRenderer* renderer, int faceSize);
+
 // The ray through the centre of window pixel (x, y) (display coordinates) of `renderer`, in world
 // space.
 void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double direction[3]);

@@ -8,7 +8,6 @@
 // passes left, single pass right).
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
-#include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
 #include "vtkIceTeapotSource.h"
@@ -22,8 +21,6 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSkybox.h"
-#include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -39,12 +36,8 @@ const int Height = 240;
 
 IceTest::Image Render(vtkPolyDataAlgorithm* source, int method, bool ice, bool interior = true)
 {
-  vtkSmartPointer<vtkTexture> sky = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
   vtkNew<vtkRenderer> renderer;
-  renderer->SetEnvironmentTexture(sky);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(sky);
-  renderer->AddActor(skybox);
+  IceTest::AddSky(renderer, 256);
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
   mapper->SetInteriorMethod(method);

@@ -9,7 +9,6 @@
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapPass.h"
-#include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
 #include "vtkIceProperty.h"
@@ -23,9 +22,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSkybox.h"
 #include "vtkSphereSource.h"
-#include "vtkTexture.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -54,12 +51,8 @@ using Setup = std::function<void(Scene&)>;
 IceTest::Image Render(
   vtkPolyDataAlgorithm* source, int method, bool interior, const Setup& setup, int ice = 1)
 {
-  vtkSmartPointer<vtkTexture> sky = IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 256);
   vtkNew<vtkRenderer> renderer;
-  renderer->SetEnvironmentTexture(sky);
-  vtkNew<vtkSkybox> skybox;
-  skybox->SetTexture(sky);
-  renderer->AddActor(skybox);
+  IceTest::AddSky(renderer, 256);
   vtkNew<vtkIcePass> pass;
   renderer->SetPass(pass);
   vtkNew<vtkRenderWindow> window;
