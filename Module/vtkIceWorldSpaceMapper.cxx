@@ -309,13 +309,21 @@ void vtkIceWorldSpaceMapper::SetMapperShaderParameters(
 void vtkIceWorldSpaceMapper::SetCameraUniforms(
   vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
 {
+  // The normal matrix as vtkOpenGLActor::GetKeyMatrices makes it (the inverse of the actor's
+  // 3 x 3 part, which GLSL reads transposed), from any vtkActor: the screen-space interior gets
+  // the scene's prop (ParaView's vtkPVLODActor), not the OpenGL actor that draws it.
   vtkNew<vtkMatrix3x3> normalMCWC;
   if (!act->GetIsIdentity())
   {
-    vtkMatrix4x4* actorMCWC;
-    vtkMatrix3x3* actorNormals;
-    static_cast<vtkOpenGLActor*>(act)->GetKeyMatrices(actorMCWC, actorNormals);
-    normalMCWC->DeepCopy(actorNormals);
+    vtkMatrix4x4* matrix = act->GetMatrix();
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        normalMCWC->SetElement(i, j, matrix->GetElement(i, j));
+      }
+    }
+    normalMCWC->Invert();
   }
   program->SetUniformMatrix("iceNormalMCWCMatrix", normalMCWC);
 

@@ -3,9 +3,9 @@
 // the ice's silhouette (where the single pass shades fragments whose pixel centre lies outside
 // the ice) and float rounding. One behaviour per case: the default look on the block and the
 // teapot, 128 cracks (culled per screen tile), a dynamic cube map, two ice props overlapping, the
-// debug views, a frosted surface, parallel projection and a renderer in a viewport. Each case also
-// checks that the interior shows (the picture without cracks and air differs) and that nothing
-// differs away from the ice.
+// debug views, a frosted surface, a turned and stretched actor, parallel projection and a renderer
+// in a viewport. Each case also checks that the interior shows (the picture without cracks and
+// air differs) and that nothing differs away from the ice.
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapPass.h"
@@ -44,6 +44,7 @@ struct Scene
   vtkRenderer* Renderer;
   vtkIcePass* Pass;
   std::vector<vtkIceMapper*> Mappers;
+  std::vector<vtkActor*> Actors;
 };
 using Setup = std::function<void(Scene&)>;
 
@@ -76,6 +77,7 @@ IceTest::Image Render(
     messages->Watch(mapper->GetIceProperty());
     mappers.push_back(mapper);
     scene.Mappers.push_back(mapper);
+    scene.Actors.push_back(actor);
   }
   messages->Watch(pass);
   messages->Watch(renderer);
@@ -235,6 +237,18 @@ bool Frosted()
     "frosted", block, [](Scene& scene) { scene.Mappers[0]->GetIceProperty()->SetRoughness(0.3); });
 }
 
+// A turned and stretched actor: the crack sheets' normals go through the actor's normal matrix.
+bool Transformed()
+{
+  vtkNew<vtkIceBlockSource> block;
+  return Compare("turned and stretched actor", block, [](Scene& scene) {
+    scene.Actors[0]->RotateY(30.0);
+    scene.Actors[0]->RotateX(20.0);
+    scene.Actors[0]->SetScale(1.0, 1.3, 0.8);
+    scene.Renderer->ResetCamera();
+  });
+}
+
 bool Parallel()
 {
   vtkNew<vtkIceTeapotSource> teapot;
@@ -264,6 +278,7 @@ int TestIceScreenInterior(int argc, char* argv[])
     { "two-ice", TwoIce },
     { "debug-views", DebugViews },
     { "frosted", Frosted },
+    { "transformed", Transformed },
     { "parallel", Parallel },
     { "viewport", Viewport },
   };
