@@ -478,8 +478,10 @@ protected:
   void PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program);
   void FinishInterior(vtkRenderer* ren);
   // The environment the ice samples in a draw of `act` (a dynamic cube map is bound by the
-  // frame): bound until UnbindEnvironment, its uniforms set on `program`.
-  void BindEnvironment(vtkRenderer* ren, vtkActor* act);
+  // frame): bound until UnbindEnvironment, its uniforms set on `program`. Called for the surface
+  // (RenderPieceStart) and for the screen-space interior's step: a subclass that picks another
+  // environment overrides this, so both sample the same one.
+  virtual void BindEnvironment(vtkRenderer* ren, vtkActor* act);
   void SetEnvironmentUniforms(vtkShaderProgram* program);
   void UnbindEnvironment(vtkRenderer* ren);
 

@@ -29,16 +29,17 @@ vtkTexture* vtkPVIceMapper::GetBackgroundEnvironment()
 }
 
 //------------------------------------------------------------------------------
-void vtkPVIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+void vtkPVIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
 {
-  // vtkIceMapper binds the renderer's environment here; the renderer has it for that moment only.
+  // vtkIceMapper binds the renderer's environment here (for the surface and for the
+  // screen-space interior's step); the renderer has it for that moment only.
   if (!this->BackgroundEnvironment || ren->GetEnvironmentTexture())
   {
-    this->Superclass::RenderPieceStart(ren, act);
+    this->Superclass::BindEnvironment(ren, act);
     return;
   }
   ren->SetEnvironmentTexture(this->BackgroundEnvironment);
-  this->Superclass::RenderPieceStart(ren, act);
+  this->Superclass::BindEnvironment(ren, act);
   ren->SetEnvironmentTexture(nullptr);
 }
 

@@ -36,7 +36,7 @@ protected:
   vtkPVIceMapper();
   ~vtkPVIceMapper() override;
 
-  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void BindEnvironment(vtkRenderer* ren, vtkActor* act) override;
 
 private:
   vtkPVIceMapper(const vtkPVIceMapper&) = delete;
