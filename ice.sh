@@ -16,7 +16,7 @@
 #                                         pip install . where missing, adds its trame packages
 #   ./ice.sh vtk-sdk PREFIX               the SDK of the vtk wheel in VTKICE_PYTHON, made from
 #                                         VTKICE_VTK_SOURCE, for CMAKE_PREFIX_PATH=PREFIX pip install .
-#   ./ice.sh soak [frames] [seed]         build, then the long soak (10 000 frames, ~15 min)
+#   ./ice.sh soak [frames] [seed] [WxH]   build, then the long soak (10 000 frames, ~15 min)
 #   ./ice.sh sanitize [ctest options]     every test with ASan+UBSan, in build-asan/
 #   ./ice.sh fuzz [seconds]               the libFuzzer harnesses, each for seconds (default 60),
 #                                         built with clang in build-fuzz/
@@ -149,7 +149,7 @@ case "$command" in
   *)
     echo "usage: ./ice.sh render [ice-render options] | ./ice.sh test [ctest options]" \
       "| ./ice.sh test-vtk [ctest options]" \
-      "| ./ice.sh fuzz [seconds] | ./ice.sh soak [frames] [seed] | ./ice.sh sanitize [ctest options]" \
+      "| ./ice.sh fuzz [seconds] | ./ice.sh soak [frames] [seed] [WxH] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
       "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options] | ./ice.sh web [--port N]" \
       "| ./ice.sh vtk-sdk PREFIX | ./ice.sh lane trixie|sid [ctest options]" >&2

@@ -9,9 +9,10 @@
 // After the first cycle (warm-up) the number of OpenGL objects of each kind must not grow and
 // memory must stay flat.
 //
-//   IceCxxTests TestIceSoak [--frames N] [--seed S] [--keep-going] [--small]
+//   IceCxxTests TestIceSoak [--frames N] [--seed S] [--keep-going] [--small | --window W H]
 // 300 frames by default (ctest); the long soak (Testing/Scripts/soak.sh) runs 10 000 and keeps
-// going after a failure to report every figure.
+// going after a failure to report every figure. --window: the largest window (first cycle) is
+// W x H instead of 320 x 240, the others and the cube faces scaled with it.
 #include "IceTestResources.h"
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
@@ -86,6 +87,16 @@ struct Sizes
 };
 const Sizes Normal = { { 320, 240 }, { 200, 150 }, 64 };
 const Sizes Small = { { 160, 120 }, { 100, 75 }, 32 };
+
+// Normal's proportions with the largest window `width` x `height` (at least 64 x 48).
+Sizes Scaled(int width, int height)
+{
+  width = std::max(64, width);
+  height = std::max(48, height);
+  Sizes sizes = { { width, height }, { width * 5 / 8, height * 5 / 8 },
+    std::max(32, std::min(1024, width / 5)) };
+  return sizes;
+}
 
 struct IceObject
 {
@@ -501,7 +512,9 @@ bool Soak::Run(int frames, bool keepGoing)
   std::cout << "soak: " << frame << " frames in " << seconds << " s ("
             << 1000.0 * seconds / std::max(frame, 1) << " ms/frame), " << this->Resizes
             << " resizes, " << this->Created << " ice actors created, " << this->NewPasses
-            << " new passes, " << this->GLErrors << " OpenGL errors\n";
+            << " new passes, " << this->GLErrors << " OpenGL errors; windows up to "
+            << this->Size.Max[0] << "x" << this->Size.Max[1] << ", cube faces " << this->Size.Face
+            << " pixels\n";
   if (this->Samples.size() >= 2)
   {
     ok = this->ReportMemory() && ok;
@@ -517,6 +530,7 @@ int TestIceSoak(int argc, char* argv[])
   unsigned int seed = 12345;
   bool keepGoing = false;
   bool small = false;
+  Sizes sizes = Normal;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
@@ -531,11 +545,16 @@ int TestIceSoak(int argc, char* argv[])
     {
       small = true;
     }
+    else if (!std::strcmp(argv[i], "--window") && i + 2 < argc)
+    {
+      sizes = Scaled(std::atoi(argv[i + 1]), std::atoi(argv[i + 2]));
+      i += 2;
+    }
     else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc)
     {
       seed = static_cast<unsigned int>(std::strtoul(argv[++i], nullptr, 10));
     }
   }
-  Soak soak(seed, small ? Small : Normal);
+  Soak soak(seed, small ? Small : sizes);
   return soak.Run(frames, keepGoing) ? EXIT_SUCCESS : EXIT_FAILURE;
 }
