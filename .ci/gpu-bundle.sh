@@ -46,6 +46,26 @@ for f in "${programs[@]}"; do objdump -p "$f" | awk '/NEEDED/ {print $2}'; done 
     esac
   done
 strip --strip-unneeded .gpu/b/bin/* .gpu/b/lib/*.so* 2> /dev/null || true
+
+# The suite's C++ tests that render through the back end (ctest's label backend) as ctest runs
+# them, for .ci/gpu-run.sh: one line each, name, environment, arguments, tab-separated, this
+# checkout's folder as @REPO@ and the test's output folder as @TMP@. Left out: the environment
+# reader's test (OpenImageIO is stubbed), the X and OSMesa back ends (neither is there).
+ctest --test-dir "$build" -N -L backend --show-only=json-v1 > .gpu/tests.json
+python3 - "$PWD" "$build" .gpu/tests.json > .gpu/b/tests.txt <<'PY'
+import json, os, sys
+repo, build, listing = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
+temporary = os.path.join(build, "Testing", "Temporary")
+skipped = ("Cxx.TestIceEnvironmentReader", "Cxx.TestIceBackend.x", "Cxx.TestIceBackend.osmesa")
+for test in json.load(open(listing))["tests"]:
+    if not test["name"].startswith("Cxx.") or test["name"] in skipped:
+        continue
+    environment = [v for p in test.get("properties", []) if p["name"] == "ENVIRONMENT"
+                   for v in p["value"]]
+    arguments = [a.replace(temporary, "@TMP@").replace(repo, "@REPO@") for a in test["command"][1:]]
+    print("\t".join([test["name"], " ".join(environment) or "-"] + arguments))
+PY
+echo "$(wc -l < .gpu/b/tests.txt) tests listed for the GPU run"
 tar cJf .gpu/bundle.tar.xz -C .gpu/b .
 
 # glvnd's loaders, unpacked there over the driver's image.

@@ -1,8 +1,9 @@
 #!/bin/bash
 # On the device tool's GPU machine, from the repository root, with .gl, .gpu/bundle.tar.xz and
 # this file carried (.ci/gpu-bundle.sh made them): ice-render, a full ice-bench run (and the
-# objects groups without multisampling) and the EGL tests, all under $OUT. About a minute on
-# an NVIDIA H200.
+# objects groups without multisampling) and the suite's EGL tests (the bundle's tests.txt), all
+# under $OUT with the tests' pictures (tests.tar.gz: where a picture differs from llvmpipe's
+# baseline, the candidate for an alternative baseline Name_1.png, to be looked at first).
 set -u -o pipefail
 T0=$(date +%s)
 REPO=$(pwd)
@@ -49,33 +50,31 @@ if [ "$(elapsed)" -lt 280 ]; then
 fi
 cd - > /dev/null
 
-echo "== EGL tests on the GPU ($(elapsed) s)"
+echo "== EGL tests on the GPU: the suite's backend tests as ctest runs them ($(elapsed) s)"
 mkdir -p /tmp/gt
 pass=0
 fail=""
-for t in TestIceMapperReference TestIceInteriorMethods TestIceTeapot TestIceCracks \
-  TestIceAirAndBumps TestIceExitPoint TestIceBackfaceCulling TestIceFigure1 TestIceFigure4 \
-  TestIceFigure5 TestIceGlistening TestIceGlisteningPlane TestIceGlisteningSnow \
-  TestIceCracksConcave TestIceCubeMapPass TestIceCubeMapHDR TestIceCubeMapCompositor \
-  TestIcePassScenes TestIcePassTwoIce TestIcePassCamera TestIcePassPicking TestIcePassStereo \
-  TestIcePassRendererOptions TestIcePassLayouts TestIcePassNoIce TestIcePassWork \
-  TestIceRepresentations TestIceColorByArray TestIceInvisible TestIceNoEnvironment \
-  TestIcePlacementBounds TestIceSources TestIceViewer TestIcePanoramaEnvironment \
-  TestIceLifecycle TestIceBackend; do
-  [ "$(elapsed)" -lt 520 ] || { echo "(out of time before $t)"; break; }
-  extra=()
-  [ $t = TestIceBackend ] && extra=(--backend egl)
-  base=$t
-  [ $t = TestIceBackend ] && base=TestIceTeapot
-  VTKICE_BACKEND=egl timeout 60 /tmp/b/bin/IceCxxTests $t "${extra[@]}" \
-    -V "$REPO/Testing/Data/Baseline/$base.png" -T /tmp/gt > /tmp/gt/$t.log 2>&1
+# TestIceOpticsFunctions compiles the GLSL files of this checkout.
+export VTKICE_GLSL_DIR=$REPO/Module/glsl
+while IFS=$'\t' read -r -a fields; do
+  name=${fields[0]}
+  [ "$(elapsed)" -lt 540 ] || { echo "(out of time before $name)"; break; }
+  environment=()
+  [ "${fields[1]}" != - ] && read -r -a environment <<< "${fields[1]}"
+  arguments=("${fields[@]:2}")
+  arguments=("${arguments[@]//@REPO@/$REPO}")
+  arguments=("${arguments[@]//@TMP@//tmp/gt}")
+  env VTKICE_BACKEND=egl "${environment[@]}" timeout 60 /tmp/b/bin/IceCxxTests "${arguments[@]}" \
+    > "/tmp/gt/$name.log" 2>&1
   rc=$?
+  # ctest's failure expression (Testing/Cxx/CMakeLists.txt): VTK's errors fail a test too.
+  if [ $rc = 0 ] && grep -q -E "ERROR:|ERR\||Segmentation fault" "/tmp/gt/$name.log"; then rc=1; fi
   if [ $rc = 0 ]; then
-    pass=$((pass + 1)); echo "PASS $t"
+    pass=$((pass + 1)); echo "PASS $name"
   else
-    fail="$fail $t"; echo "FAIL $t (exit $rc)"; tail -15 /tmp/gt/$t.log
+    fail="$fail $name"; echo "FAIL $name (exit $rc)"; tail -15 "/tmp/gt/$name.log"
   fi
-done
+done < /tmp/b/tests.txt
 echo "== $pass passed; failed:$fail ($(elapsed) s)"
 tar czf "$OUT/tests.tar.gz" -C /tmp/gt . 2>/dev/null
 ls -la "$OUT"
