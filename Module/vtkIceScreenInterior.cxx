@@ -33,14 +33,13 @@ vtkIceScreenInterior::~vtkIceScreenInterior() = default;
 namespace
 {
 // The quad's fragment shader for the renderer's lights (VTK's declarations and light loop, as
-// the surface's), an environment sampled rough or sharp, and with or without the nearest ice's
-// front to compare with.
-std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough, bool nearest)
+// the surface's) and an environment sampled rough or sharp.
+std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
 {
   using vtkIceShaderSections::Get;
   const int complexity = renderer->GetLightingCount() > 0 ? renderer->GetLightingComplexity() : 0;
   std::string declarations = std::string(rough ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
-    (nearest ? "#define ICE_SCREEN_NEAREST\n" : "") + renderer->GetLightingUniforms() +
+    renderer->GetLightingUniforms() +
     vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") + Get(vtkIceSurfaceFS, "Environment") +
     "uniform float iceRefractionRatio;\n" + Get(vtkIceScreenInteriorFS, "Tiles") +
     vtkIceSinglePassInterior::Declarations() +
@@ -90,7 +89,7 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   state->vtkglDepthFunc(GL_GREATER);
 
   const std::string source =
-    QuadShader(renderer, mapper->GetIceProperty()->GetRoughness() > 0.0, nearest != nullptr);
+    QuadShader(renderer, mapper->GetIceProperty()->GetRoughness() > 0.0);
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
   if (!quad)
   {
@@ -119,7 +118,8 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
 
   frame->Textures.BindScreen(program, renderer, "iceDepthInterval", frontDepth);
   frame->Textures.BindScreen(program, renderer, "iceBackNormals", frame->BackfaceNormals);
-  frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest);
+  // One prop: its own front faces are the nearest (the test never discards).
+  frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest ? nearest : frontDepth);
   frame->BindCubeMap(program, actor);
   renderer->UpdateLightingUniforms(program);
   const vtkIceSinglePassInterior* interior =

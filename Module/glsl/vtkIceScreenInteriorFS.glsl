@@ -38,18 +38,16 @@ int iceAirRecord(int j) { return iceTileEntry(2 + iceTileEntry(0) + j); }
 uniform sampler2D iceDepthInterval;
 uniform sampler2D iceBackNormals;
 uniform mat4 iceDCWCMatrix; // normalised device coordinates to world
-#ifdef ICE_SCREEN_NEAREST
-uniform sampler2D iceNearestFront; // R: the nearest front faces' view depth of all the ice
-#endif
+// R: the nearest front faces' view depth of all the ice (the prop's own with one prop: one
+// program either way, no compile when an ice prop leaves the view).
+uniform sampler2D iceNearestFront;
 //ICE::Impl
   ivec2 texel = iceScreenTexel();
   float front = texelFetch(iceDepthInterval, texel, 0).r;
-#ifdef ICE_SCREEN_NEAREST
   if (front > texelFetch(iceNearestFront, texel, 0).r)
   {
     discard;
   }
-#endif
   ivec2 tile = (ivec2(gl_FragCoord.xy) - iceTileOrigin) / iceTileSize;
   iceTileStart = (tile.y * iceTilesAcross + tile.x) * iceTileStride;
   // The front face's point: on the pixel's ray through the near and far planes, at its depth.

@@ -2,10 +2,12 @@
 // pixel instead of once per fragment: the same look, so the same pictures up to the pixels along
 // the ice's silhouette (where the single pass shades fragments whose pixel centre lies outside
 // the ice) and float rounding. One behaviour per case: the default look on the block and the
-// teapot, 128 cracks (culled per screen tile), a dynamic cube map, two ice props overlapping, the
-// debug views, a frosted surface, a turned and stretched actor, parallel projection and a renderer
-// in a viewport. Each case also checks that the interior shows (the picture without cracks and
-// air differs) and that nothing differs away from the ice.
+// teapot, 128 cracks (culled per screen tile), a dynamic cube map, two ice props overlapping (and
+// one of them hidden: no program compiled), the debug views, a frosted surface, a turned and
+// stretched actor, parallel projection and a renderer in a viewport. Each case also checks that the
+// interior shows (the picture without cracks and air differs) and that nothing differs away from
+// the ice.
+#include "IceTestResources.h"
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapPass.h"
@@ -219,6 +221,46 @@ bool TwoIce()
     2);
 }
 
+// Two ice props, then one hidden: the step's program for one prop is the one
+// for several (the nearest test against its own front faces), so an ice prop leaving the view
+// compiles nothing (the 10 000-frame soak at 1280 x 1024 saw a program appear at frame 3400
+// when a random window size left one ice prop in view).
+bool HiddenIceCompilesNothing()
+{
+  vtkNew<vtkIceBlockSource> block;
+  vtkNew<vtkRenderer> renderer;
+  IceTest::AddSky(renderer, 64);
+  vtkNew<vtkIcePass> pass;
+  renderer->SetPass(pass);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(Width, Height);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkNew<vtkIceMapper> mapper;
+    mapper->SetInputConnection(block->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->SetPosition(0.9 * i, 0.25 * i, -1.2 * i);
+    renderer->AddActor(actor);
+    actors.push_back(actor);
+  }
+  renderer->ResetCamera();
+  // The second frame compiles what a still input gets then (vtkIceMapper's closure check).
+  window->Render();
+  window->Render();
+  const IceTest::GLCensus both = IceTest::TakeGLCensus(window);
+  actors[1]->VisibilityOff();
+  window->Render();
+  const IceTest::GLCensus one = IceTest::TakeGLCensus(window);
+  return IceTest::Expect(one.Programs == both.Programs && one.Shaders == both.Shaders,
+    "one of two ice props hidden: " + std::to_string(both.Programs) + " -> " +
+      std::to_string(one.Programs) + " programs, " + std::to_string(both.Shaders) + " -> " +
+      std::to_string(one.Shaders) + " shaders");
+}
+
 bool DebugViews()
 {
   vtkNew<vtkIceBlockSource> block;
@@ -276,6 +318,7 @@ int TestIceScreenInterior(int argc, char* argv[])
     { "many-cracks", ManyCracks },
     { "dynamic-cube-map", DynamicCubeMap },
     { "two-ice", TwoIce },
+    { "hidden-ice-compiles-nothing", HiddenIceCompilesNothing },
     { "debug-views", DebugViews },
     { "frosted", Frosted },
     { "transformed", Transformed },
