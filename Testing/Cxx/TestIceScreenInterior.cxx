@@ -50,18 +50,26 @@ struct Scene
 };
 using Setup = std::function<void(Scene&)>;
 
+// A Width x Height off-screen window drawing `renderer` with `pass` under the sky (cube faces of
+// `faceSize` pixels).
+vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* renderer, vtkIcePass* pass, int faceSize)
+{
+  IceTest::AddSky(renderer, faceSize);
+  renderer->SetPass(pass);
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetSize(Width, Height);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  return window;
+}
+
 // The scene rendered with every ice mapper set to `method`; `interior` false: no cracks or air.
 IceTest::Image Render(
   vtkPolyDataAlgorithm* source, int method, bool interior, const Setup& setup, int ice = 1)
 {
   vtkNew<vtkRenderer> renderer;
-  IceTest::AddSky(renderer, 256);
   vtkNew<vtkIcePass> pass;
-  renderer->SetPass(pass);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(Width, Height);
-  window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
+  vtkSmartPointer<vtkRenderWindow> window = MakeWindow(renderer, pass, 256);
   IceTest::MessageRecorder* messages = IceTest::MessageRecorder::New();
   Scene scene{ window, renderer, pass, {} };
   std::vector<vtkSmartPointer<vtkIceMapper>> mappers;
@@ -229,13 +237,8 @@ bool HiddenIceCompilesNothing()
 {
   vtkNew<vtkIceBlockSource> block;
   vtkNew<vtkRenderer> renderer;
-  IceTest::AddSky(renderer, 64);
   vtkNew<vtkIcePass> pass;
-  renderer->SetPass(pass);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(Width, Height);
-  window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
+  vtkSmartPointer<vtkRenderWindow> window = MakeWindow(renderer, pass, 64);
   std::vector<vtkSmartPointer<vtkActor>> actors;
   for (int i = 0; i < 2; ++i)
   {
