@@ -529,7 +529,6 @@ int TestIceSoak(int argc, char* argv[])
   int frames = 300;
   unsigned int seed = 12345;
   bool keepGoing = false;
-  bool small = false;
   Sizes sizes = Normal;
   for (int i = 1; i < argc; ++i)
   {
@@ -543,7 +542,7 @@ int TestIceSoak(int argc, char* argv[])
     }
     else if (!std::strcmp(argv[i], "--small"))
     {
-      small = true;
+      sizes = Small;
     }
     else if (!std::strcmp(argv[i], "--window") && i + 2 < argc)
     {
@@ -555,6 +554,6 @@ int TestIceSoak(int argc, char* argv[])
       seed = static_cast<unsigned int>(std::strtoul(argv[++i], nullptr, 10));
     }
   }
-  Soak soak(seed, small ? Small : sizes);
+  Soak soak(seed, sizes);
   return soak.Run(frames, keepGoing) ? EXIT_SUCCESS : EXIT_FAILURE;
 }
