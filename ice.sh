@@ -1,16 +1,21 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # VTK Ice's entry point, used by the README's Quick start and by CI.
 #   ./ice.sh render [ice-render options]  install what is missing, build, render ice.png
 #   ./ice.sh test [ctest options]         every test, as CI runs them: the VTK 9.1 stage, the VTK 9.7
 #                                         wheel stage, the ParaView stage, Debian's VTK 9.1 installed
-#                                         again, then the trixie and sid lanes
+#                                         again, then the trixie and sid lanes; ends with a
+#                                         table of the stages (passed, failed or skipped, tests,
+#                                         minutes), exit 1 when one failed (VTKICE_SKIP_STAGES:
+#                                         words of "vtk wheel paraview fuzz trixie sid" to skip)
 #   ./ice.sh test-vtk [ctest options]     the VTK 9.1 stage alone: build, run its tests
 #   ./ice.sh wheel [ctest options]        the wheel stage alone: a venv with the vtk 9.7.0 wheel and
 #                                         PyVista, its SDK, pip install ., every test on VTK 9.7
 #                                         (VTKICE_VTK_SOURCE: VTK 9.7.0's source archive)
 #   ./ice.sh lane trixie|sid [ctest opts] the VTK stage on Debian 13 (VTK 9.3) or sid (VTK 9.6) in a
 #                                         chroot made with mmdebstrap, then PyVista from Debian,
-#                                         then the ParaView stage on its ParaView (5.13, 6.1)
+#                                         then the ParaView stage on its ParaView (5.13, 6.1);
+#                                         ends with the same table
 #   ./ice.sh web [--port N]               the web viewer (Examples/Web) on http://127.0.0.1:N/ (8080),
 #                                         rendered through EGL; makes the wheel's venv, SDK and
 #                                         pip install . where missing, adds its trame packages
@@ -25,6 +30,7 @@
 #   ./ice.sh paraview [ctest options]     the ParaView stage alone: install ParaView 5.11 (in place
 #                                         of Debian's VTK 9.1 dev packages), build the plugin, run
 #                                         its tests; other commands swap the packages back
+# Every package install waits for another program's hold on the package lock (.ci/apt-install.sh).
 # ice-render needs no X server: without a working DISPLAY it renders through EGL (else OSMesa).
 # The tests run under Xvfb when there is no working DISPLAY, then the tests labelled "backend"
 # run again through EGL with no DISPLAY at all (Documentation/headless.md).
@@ -66,25 +72,35 @@ case "$command" in
     "$build_dir/bin/ice-bench" "$@"
     ;;
   test)
-    # Each stage runs whatever the other did; the machine ends as the VTK 9.1 stage needs it.
-    status=0
+    # Each stage runs whatever the other did; the machine ends as the VTK 9.1 stage needs it. A
+    # stage that fails does not stop the others; the table at the end says which did.
+    # VTKICE_SKIP_STAGES: words of "vtk wheel paraview fuzz trixie sid" not to run.
+    . .ci/stages.sh
+    me=./$(basename "$0")
+    stage() { # stage WORD NAME COMMAND...
+      local word=$1 name=$2
+      shift 2
+      case " ${VTKICE_SKIP_STAGES:-} " in
+        *" $word "*) stage_skip "$name" VTKICE_SKIP_STAGES ;;
+        *)
+          echo "== $name"
+          stage_run "$name" "$@"
+          ;;
+      esac
+    }
     # Each test once, as in the lanes (those labelled backend through EGL, the rest under X): the
     # whole run fits in CI's hour. ./ice.sh test-vtk alone runs the backend tests under X as well.
-    VTKICE_TESTS_ONCE=${VTKICE_TESTS_ONCE:-1} "./$(basename "$0")" test-vtk "$@" || status=1
-    echo "== VTK 9.7 wheel stage (./ice.sh wheel)"
-    "./$(basename "$0")" wheel "$@" || status=1
-    echo "== ParaView stage (./ice.sh paraview)"
-    "./$(basename "$0")" paraview "$@" || status=1
-    echo "== Debian's VTK 9.1 again"
-    bash .ci/install-deps.sh || status=1
-    echo "== Fuzzing (./ice.sh fuzz 60)"
-    "./$(basename "$0")" fuzz 60 || status=1
+    stage vtk "VTK 9.1 stage (./ice.sh test-vtk)" \
+      env VTKICE_TESTS_ONCE="${VTKICE_TESTS_ONCE:-1}" "$me" test-vtk "$@"
+    stage wheel "VTK 9.7 wheel stage (./ice.sh wheel)" "$me" wheel "$@"
+    stage paraview "ParaView stage (./ice.sh paraview)" "$me" paraview "$@"
+    stage paraview "Debian's VTK 9.1 again" bash .ci/install-deps.sh
+    stage fuzz "Fuzzing (./ice.sh fuzz 60)" "$me" fuzz 60
     # The other Debian suites, in chroots: the host's packages stay as the VTK 9.1 stage needs them.
     for suite in trixie sid; do
-      echo "== Debian $suite lane (./ice.sh lane $suite)"
-      "./$(basename "$0")" lane "$suite" "$@" || status=1
+      stage "$suite" "Debian $suite lane (./ice.sh lane $suite)" "$me" lane "$suite" "$@"
     done
-    exit "$status"
+    stage_table
     ;;
   test-vtk | sanitize)
     if [ "$command" = sanitize ]; then

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian packages VTK Ice needs to build, test and render headless
 # (Xvfb for the X tests; Mesa EGL and OSMesa for rendering without X), to make and check its
 # Debian package (dpkg-dev, lintian) and the turntable's video (ffmpeg).
@@ -11,7 +12,7 @@
 # The two VTKs cannot be installed together: apt replaces one by the other, so each stage calls
 # this first and finds what it needs whatever ran before.
 set -euo pipefail
-recommends=--no-install-recommends
+recommends=
 if [ "${1:-}" = paraview ]; then
   # The GUI test's screenshot uses xwd (x11-apps) and ImageMagick; the MPI test mpiexec. ParaView's recommended
   # packages (Qt's platform and image plugins among them) are what the GUI was tested with.
@@ -19,7 +20,7 @@ if [ "${1:-}" = paraview ]; then
     paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config
     libglm-dev libopenimageio-dev xvfb xauth libgl1-mesa-dri x11-apps imagemagick openmpi-bin
   )
-  recommends=
+  recommends=yes
 else
   packages=(
     libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config
@@ -43,11 +44,11 @@ done
 if [ ${#missing[@]} -eq 0 ]; then
   exit 0
 fi
-echo "Installing missing packages: ${missing[*]}"
-SUDO=""
-[ "$(id -u)" -eq 0 ] || SUDO="sudo"
-export DEBIAN_FRONTEND=noninteractive
-# A run interrupted during an install (Ctrl-C) leaves dpkg half-configured; finish that first.
-$SUDO dpkg --configure -a
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq $recommends "${missing[@]}"
+case "${1:-}" in
+  paraview) step="the ParaView stage's packages" ;;
+  fuzz) step="the fuzzing stage's packages" ;;
+  web) step="the wheel stage's packages (with the browser)" ;;
+  *) step="the VTK stage's packages" ;;
+esac
+# Waits for another program's hold on the package lock, and names the step if it fails.
+bash "$(dirname "$0")/apt-install.sh" "$step" ${recommends:+--recommends} "${missing[@]}"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # ./ice.sh lane trixie|sid [ctest options]: VTK Ice on another Debian suite's VTK and ParaView, in
 # chroots made from Debian's packages (mmdebstrap): trixie has VTK 9.3 and ParaView 5.13 (with its
 # own VTK 9.3), sid VTK 9.6 and ParaView 6.1 (on that VTK). A chroot is made once and reused while
@@ -11,7 +12,7 @@
 # beside its python3-vtk9: its ParaView stage runs in a second chroot, trixie-paraview; sid's runs
 # in the same chroot.
 # The mounts live in this run's own mount namespace: undone on every exit (Ctrl-C, kill too), never
-# seen by another run.
+# seen by another run. Ends with a table of its stages (.ci/stages.sh), exit 1 when one failed.
 set -euo pipefail
 # In a mount namespace of its own: the chroots' mounts are seen by this run only and vanish with
 # it, however it ends, and a chroot another run is using shows no mounts here.
@@ -65,19 +66,12 @@ else
   paraview_packages=("${packages[@]}")
 fi
 
-if ! command -v mmdebstrap >/dev/null 2>&1; then
-  echo "== lane $suite: installing mmdebstrap"
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq mmdebstrap >/dev/null
-fi
-
-# Mounts this run made, undone in reverse order whatever happens.
-mounted=()
+# Mounts under the lanes' folder in this run's namespace (the stages mount in subshells), undone
+# in reverse order whatever happens.
 unmount_all() {
-  local i
-  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do
-    umount -l "${mounted[$i]}" 2>/dev/null || true
-  done
-  mounted=()
+  local target
+  awk -v root="$lanes/" 'index($2, root) == 1 { print $2 }' /proc/mounts | tac |
+    while read -r target; do umount -l "$target" 2>/dev/null || true; done
 }
 trap unmount_all EXIT
 trap 'unmount_all; exit 130' INT TERM
@@ -89,7 +83,6 @@ mount_in() { # mount_in ROOT TARGET MOUNT-ARGS...: unless this run mounted it al
     return 0
   fi
   mount "$@" "$target"
-  mounted+=("$target")
 }
 # A chroot with mounts under it (made outside a lane run) is never removed.
 mounted_under() { grep -q " $1/" /proc/mounts; }
@@ -136,33 +129,64 @@ prepare_chroot() {
   if [ "$(cat "$root/.vtkice-lane")" != "$stamp" ]; then
     # The package list changed since the chroot was made: add what is missing (mmdebstrap
     # removed the package lists, so update first; the mirror's Valid-Until is not checked).
-    echo "== lane $suite: installing the packages the list of $root adds"
-    inside "$root" 'apt-get -o Acquire::Check-Valid-Until=false update -qq &&
-      DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@"' "$@"
+    inside "$root" 'VTKICE_APT_UPDATE_OPTIONS="-o Acquire::Check-Valid-Until=false" \
+      bash /src/.ci/apt-install.sh "lane $1: the packages the chroot'"'"'s list adds" "${@:2}"' \
+      "$suite" "$@"
     printf '%s' "$stamp" >"$root/.vtkice-lane"
   fi
 }
 
-status=0
+. .ci/stages.sh
 root=$lanes/$suite
+declare -A made=()
+make_root() { # make_root ROOT PACKAGE...: the stage making the chroot, once; made[ROOT]=yes or no
+  if [ -z "${made[$1]:-}" ]; then
+    stage_run "chroot $(basename "$1")" prepare_chroot "$@"
+    made[$1]=$([ "$stage_status" -eq 0 ] && echo yes || echo no)
+  fi
+}
+stage_run "mmdebstrap on the host" bash -c \
+  'command -v mmdebstrap >/dev/null || bash .ci/apt-install.sh "lane $0: mmdebstrap" mmdebstrap' \
+  "$suite"
+if [ "$stage_status" -ne 0 ]; then
+  made[$root]=no
+  made[$paraview_root]=no
+fi
 if [[ $stages == *" vtk "* ]]; then
-  prepare_chroot "$root" "${packages[@]}"
-  echo "== lane $suite: $(inside "$root" 'dpkg-query -W -f "VTK \${Version}" libvtk9-dev; dpkg-query -W -f ", PyVista \${Version}" python3-pyvista')"
-  inside "$root" 'cd /src && ./ice.sh test-vtk "$@"' "$@" || status=1
-  echo "== lane $suite: PyVista (Debian's python3-pyvista) with the vtkice of $build_dir"
-  inside "$root" 'cd /src && env -u DISPLAY PYTHONPATH=/src/$VTKICE_BUILD_DIR/lib/python3/dist-packages \
-    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" python3 -m pytest -q -p no:cacheprovider \
-    Testing/Wheel/test_pyvista.py' || status=1
+  make_root "$root" "${packages[@]}"
+  if [ "${made[$root]}" = yes ]; then
+    # Debian's versions without their revisions: "VTK 9.3.0, PyVista 0.44.1".
+    versions=$(inside "$root" 'dpkg-query -W -f "VTK \${Version}" libvtk9-dev; dpkg-query -W -f ", PyVista \${Version}" python3-pyvista' |
+      sed -E 's/[+~-][^ ,]*//g')
+    echo "== lane $suite: $versions"
+    stage_run "${versions%%,*} (./ice.sh test-vtk)" \
+      inside "$root" 'cd /src && ./ice.sh test-vtk "$@"' "$@"
+    echo "== lane $suite: PyVista (Debian's python3-pyvista) with the vtkice of $build_dir"
+    stage_run "${versions#*, } (test_pyvista.py)" \
+      inside "$root" 'cd /src && env -u DISPLAY PYTHONPATH=/src/$VTKICE_BUILD_DIR/lib/python3/dist-packages \
+      xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" python3 -m pytest -q -p no:cacheprovider \
+      Testing/Wheel/test_pyvista.py'
+  else
+    stage_skip "VTK and PyVista" "no chroot"
+  fi
+else
+  stage_skip "VTK and PyVista" VTKICE_LANE_STAGES
 fi
 
 if [[ $stages == *" paraview "* ]]; then
-  # Again for sid's one chroot: it finds it made and mounted.
-  prepare_chroot "$paraview_root" "${paraview_packages[@]}"
-  echo "== lane $suite: the ParaView stage in $build_dir-paraview," \
-    "$(inside "$paraview_root" 'dpkg-query -W -f "ParaView \${Version}" paraview-dev')"
-  start=$SECONDS
-  inside "$paraview_root" 'cd /src && VTKICE_PARAVIEW_BUILD_DIR=$VTKICE_BUILD_DIR-paraview \
-    ./ice.sh paraview "$@"' "$@" || status=1
-  echo "== lane $suite: the ParaView stage took $((SECONDS - start)) s"
+  # sid's one chroot is made and mounted once, for both stages.
+  make_root "$paraview_root" "${paraview_packages[@]}"
+  if [ "${made[$paraview_root]}" = yes ]; then
+    version=$(inside "$paraview_root" 'dpkg-query -W -f "ParaView \${Version}" paraview-dev' |
+      sed -E 's/[+~-][^ ,]*//g')
+    echo "== lane $suite: the ParaView stage in $build_dir-paraview, $version"
+    stage_run "$version (./ice.sh paraview)" \
+      inside "$paraview_root" 'cd /src && VTKICE_PARAVIEW_BUILD_DIR=$VTKICE_BUILD_DIR-paraview \
+      ./ice.sh paraview "$@"' "$@"
+  else
+    stage_skip "ParaView" "no chroot"
+  fi
+else
+  stage_skip "ParaView" VTKICE_LANE_STAGES
 fi
-exit "$status"
+stage_table
