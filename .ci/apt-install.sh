@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 # .ci/apt-install.sh STEP [--recommends] PACKAGE...: every Debian package install of the project's
 # scripts (the host's stages and the lanes' chroots) goes through here. STEP names what installs

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # ./ice.sh fuzz [seconds]: the libFuzzer harnesses of Testing/Fuzz, each for `seconds` (default 60),
 # all at once, from their seeds (Testing/Fuzz/Corpus/) and what earlier runs here found
 # (build-fuzz/corpus/). Builds with clang (clang-14, libclang-rt-14-dev: installed if missing) in

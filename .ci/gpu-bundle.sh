@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Packs this machine's build (Debian 12, VTK 9.1) for a GPU machine of another Linux (the device
 # tool's NVIDIA H200, Ubuntu 24.04): .gpu/bundle.tar.xz holds ice-render, ice-bench, IceCxxTests,
 # the project's libraries and every library they load that is not glibc's or OpenGL's

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # On the device tool's GPU machine, from the repository root, with .gl, .gpu/bundle.tar.xz and
 # this file carried (.ci/gpu-bundle.sh made them): ice-render, a full ice-bench run (and the
 # objects groups without multisampling) and the suite's EGL tests (the bundle's tests.txt), all

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian packages VTK Ice needs to build, test and render headless
 # (Xvfb for the X tests; Mesa EGL and OSMesa for rendering without X), to make and check its

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 # ./ice.sh lane trixie|sid [ctest options]: VTK Ice on another Debian suite's VTK and ParaView, in
 # chroots made from Debian's packages (mmdebstrap): trixie has VTK 9.3 and ParaView 5.13 (with its

@@ -1,3 +1,4 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 # Sourced by ./ice.sh test and ./ice.sh lane: each stage's result in one table at the end.
 #   stage_run NAME COMMAND...  runs COMMAND (its output shown as it comes), records passed or

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # ./ice.sh vtk-sdk PREFIX: the SDK of a `vtk` wheel (headers, CMake package, wrapping tools) made
 # from VTK's source, for building VTK Ice against the wheel where VTK's own `vtk-sdk` wheel cannot
 # be had (PyPI serves it for macOS only). No VTK library is compiled: the SDK's imported targets

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # ./ice.sh wheel [ctest options]: VTK Ice on the `vtk` wheel from PyPI (VTK 9.7.0) with PyVista.
 #   1. a venv in build-wheel/venv with vtk, pyvista and pytest (the versions in .ci/wheel-env.sh)
 #   2. the wheel's SDK in build-wheel/sdk (./ice.sh vtk-sdk; VTKICE_VTK_SOURCE names VTK's source)
@@ -55,5 +57,7 @@ import vtkmodules.vtkRenderingOpenGL2, vtkice
 print('fresh venv: vtkice', vtkice.__file__, 'imports beside vtk', vtkice._BUILT_AGAINST)
 m = vtkice.vtkIceMapper()
 assert m.IsA('vtkOpenGLPolyDataMapper')
+from importlib.metadata import distribution
+assert any(f.name == 'LICENSE' for f in distribution('vtkice').files), 'the wheel carries no LICENSE'
 ") || status=1
 exit "$status"

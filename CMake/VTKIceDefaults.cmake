@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Settings every VTK Ice project shares (the main build and ParaView/): C++17, a Release build
 # unless told otherwise, shared libraries (VTK's Python and ClientServer wrapping need them).
 set(CMAKE_CXX_STANDARD 17)

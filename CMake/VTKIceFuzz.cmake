@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # VTKICE_FUZZ: the libFuzzer harnesses of Testing/Fuzz, with every file of VTK Ice compiled for
 # coverage-guided fuzzing and AddressSanitizer. Needs clang (Debian: clang-14 and
 # libclang-rt-14-dev, which has libFuzzer); ./ice.sh fuzz configures a folder of its own.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # A Debian package of this build (`cpack -G DEB` in the build folder, Documentation/building.md):
 # the library, headers, CMake package, Python module, ice-render, ice-bench, presets and
 # documentation under /usr, depending on the Debian packages its files link to.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # pip install . (SKBUILD): the vtkice package must sit beside the vtk wheel of the Python that
 # builds it and use that wheel's VTK. Stops with what to do when CMake found another VTK (Debian's
 # in /usr, an SDK of another release) or none.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # VTKICE_SANITIZE: build everything of VTK Ice with AddressSanitizer (with LeakSanitizer) and
 # UndefinedBehaviorSanitizer, and run the tests with the sanitizers' options
 # (Documentation/reliability.md). Use a build folder of its own: ./ice.sh sanitize.

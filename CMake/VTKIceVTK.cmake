@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The VTK that VTK Ice builds against and what differs between the versions it supports (9.1 to
 # 9.7): the one CMake file that knows (Module/vtkIceVTKCompat.h is the C++ one).
 #   - VTKICE_VTK_MODULES: the VTK modules the project uses. `cmake -P CMake/VTKIceVTK.cmake`

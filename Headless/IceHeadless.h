@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Rendering back ends for programs and tests that use VTK Ice: an X display (VTK's own GLX
 // windows), EGL (no X: the EGL device platform, e.g. NVIDIA GPUs, or Mesa's surfaceless
 // platform) or OSMesa (Mesa's software renderer, no X and no EGL).

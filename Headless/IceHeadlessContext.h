@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Internal to IceHeadless: the OpenGL contexts of the EGL and OSMesa back ends, and the routing
 // of VTK's GL calls to OSMesa (IceHeadlessGL.cxx).
 #ifndef IceHeadlessContext_h

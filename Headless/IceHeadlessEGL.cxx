@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The EGL back end: an OpenGL 3.2+ core context without a surface (EGL_KHR_surfaceless_context).
 //
 // Displays are tried in this order, the first that gives a context wins:

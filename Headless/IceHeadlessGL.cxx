@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Routing of VTK's GL calls to OSMesa.
 //
 // Debian's VTK links libGL/libOpenGL (glvnd) and a GLX-only GLEW. glvnd sends GL calls to the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The OSMesa back end: Mesa's software renderer (llvmpipe) without X or EGL. libOSMesa is loaded
 // at run time (VTKICE_OSMESA_LIBRARY, default libOSMesa.so.8 from Debian's libosmesa6), so
 // programs run where it is not installed; the GL calls of VTK reach it through IceHeadlessGL.cxx.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The X back end needs no code of its own (VTK's vtkXOpenGLRenderWindow): this only checks that
 // the display of DISPLAY opens and has GLX.
 #include "IceHeadlessContext.h"

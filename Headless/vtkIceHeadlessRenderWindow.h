@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A render window without a window system: a vtkGenericOpenGLRenderWindow that owns an EGL or
 // OSMesa context (IceHeadless::Backend::EGL, the default, or OSMesa). The context has no
 // default framebuffer; VTK renders into its own framebuffer objects, so the window is always

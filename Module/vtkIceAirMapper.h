@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceAirMapper
  * @brief   Draws the air-bubble planes inside ice, clipped to its depth interval (private to

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Private to the module: culls an ice actor's back faces for one draw where none of them can be
 // seen. VTK draws both sides of a surface; on a CPU renderer every back-face fragment drawn
 // before the front face hiding it runs the whole ice shader (its discard keeps the depth test

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceCubeMapCompositor
  * @brief   Joins the cube-map faces that several processes render of their parts of a scene.

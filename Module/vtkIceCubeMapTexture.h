@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Private to the module: connects an algorithm whose six image outputs are cube faces (OpenGL
 // order +X, -X, +Y, -Y, +Z, -Z, row 0 first) to a vtkTexture as a cube map. Shared by
 // vtkIceCubeMapSource and vtkIceEnvironmentReader so both set textures up the same way.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What one frame of vtkIcePass knows about the ice it draws: the ice props and what they need,
 // the textures ready so far and their texture units, the dynamic cube maps. The pass holds one and
 // begins and ends it with each frame with ice; in between (from the start of the ice's sub-passes

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The frame's textures that vtkIcePass hands to the shaders sampling them.
 #ifndef vtkIceFrameTextures_h
 #define vtkIceFrameTextures_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The glistening layer of vtkIceMapper (Liquidiced's ice and snow): composes its fragment shader
 // code for VTK's lights and sets its uniforms. Private to the module.
 #ifndef vtkIceGlistening_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceGlisteningTexture
  * @brief   The random normal texture of glistening ice and snow: one random crack per texel.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The inside of one ice mapper's ice: its crack sheets and air planes, the pipelines that build
 // them (vtkIceCrackGeometry; vtkIceAirGeometry, ordered by vtkIceBackToFront) and the private
 // mappers that draw them.

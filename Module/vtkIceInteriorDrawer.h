@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Draws an ice prop's cracks and air planes as separate geometry for vtkIcePass and its back-face
 // sub-pass: the paper's passes, the crack and air debug views, cracks in the back-face normals;
 // and readies the screen-space interior's program for a prop (vtkIceScreenInterior).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The look of the ice's interior (cracks and air), in one place for both ways of drawing it: the
 // paper's passes (vtkIceInterior's crack and air mappers) and the single pass
 // (vtkIceSinglePassInterior). The constants are handed to the GLSL of both as #defines; the

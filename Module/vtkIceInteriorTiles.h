@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Which of an ice prop's cracks and air planes each screen tile's rays can meet, for the
 // screen-space interior (vtkIceScreenInterior): the box around each record's sheet or plane is
 // projected with the camera, and each tile of 16 x 16 pixels lists the records whose projection

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The look of an ice scene as named settings: every vtkIceMapper and vtkIceCubeMapPass parameter
 // and the camera, each with the library's own range. One table serves ice-render's command-line
 // options (--NAME VALUE), the preset files (NAME = VALUE, vtkIceLookPreset.cxx), --print-preset,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What vtkIcePass and its sub-passes ask of the ice mappers in a frame: which props are ice, what
 // each needs rendered and what the frame gives its program (its cracks and air:
 // vtkIceInteriorDrawer). These are not vtkIceMapper's public API

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The environment as frosted ice shows it (vtkIceMapper's Roughness): a cube map whose mip level k
 // holds the environment averaged over the GGX lobe of roughness k / (Levels - 1), made from the
 // cube map the ice samples (the renderer's environment or a dynamic cube map) and made again only

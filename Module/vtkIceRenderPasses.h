@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The render passes drawing a prop: VTK lists them on the prop (vtkOpenGLRenderPass::RenderPasses)
 // while they render it. Inside the module only.
 #ifndef vtkIceRenderPasses_h

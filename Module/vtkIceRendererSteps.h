@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Private to the module: the steps of vtkIcePass's default delegate that do what
 // vtkOpenGLRenderer does without any pass, following the renderer's settings every frame:
 // - opaque: hidden line removal (UseHiddenLineRemoval, when wireframe props exist), else screen-

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The screen-space step of vtkIceMapper::InteriorScreenSpace: an ice prop's cracks, air and milky
 // core evaluated once per pixel inside its projected bounding box, by a quad over a
 // viewport-sized target (RGBA float: what the interior adds to the ice colour and how much of it

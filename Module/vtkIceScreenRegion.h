@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Private to the module: the part of a viewport-sized texture that the ice sub-passes draw into,
 // so that they clear only that part instead of the whole viewport every frame.
 #ifndef vtkIceScreenRegion_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A viewport-sized render target of the ice sub-passes: a float colour texture (sampled texel
 // for pixel, never filtered) and a depth texture in a framebuffer, made on first use and resized
 // with the viewport. The sub-passes draw only the ice, so a Drawing works only inside the ice's

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Splits the module's .glsl snippets into the parts injected at VTK's shader tags.
 // A snippet holds a "//ICE::Dec" section (declarations) and an "//ICE::Impl" section (code).
 #ifndef vtkIceShaderSections_h

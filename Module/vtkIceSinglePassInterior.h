@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The single-pass interior of one vtkIceMapper (InteriorSinglePass): its cracks and air planes as
 // records in a float texture (placement and shape, the same as the paper passes' geometry), a
 // periodic noise-gradient texture for the cracks' bumps, and the shader code that intersects the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The environment an ice mapper samples when no pass hands it a dynamic cube map: the renderer's
 // environment texture (a cube map, or an equirectangular 2D image converted to one, as ParaView
 // sets for its skybox), or a built-in sky (with one warning) when that is missing or unusable.

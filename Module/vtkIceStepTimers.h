@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // GPU times of the steps of a vtkIcePass frame, by OpenGL timestamp queries
 // (vtkOpenGLRenderTimer), read without waiting for the GPU: a step's time is collected at the
 // start of a later frame, once the GPU has finished it. Inside the module only.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Private to the module: properties of an ice mapper's input that decide what the ice can do
 // with it (vtkIceMapper warns about them once per input).
 #ifndef vtkIceSurfaceCheck_h

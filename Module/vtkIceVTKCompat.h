@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // What differs between the VTK versions VTK Ice builds against, in one place.
 #ifndef vtkIceVTKCompat_h
 #define vtkIceVTKCompat_h

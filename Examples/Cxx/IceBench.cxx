@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench: the paper's performance study, side by side with plain VTK. Every configuration is
 // timed in the same run as a plain VTK rendering (vtkPolyDataMapper, Phong) of the same scene and
 // object, interleaved with it round by round, and reported as a ratio to it. The parts are listed

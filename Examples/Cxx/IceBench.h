@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench: the measured configurations and their results, shared by the measuring program and
 // the plot (IceBenchPlot.cxx), and the program's parts, one job a file: IceBenchOptions.cxx,
 // IceBenchGroups.cxx, IceBenchScene.cxx (IceBenchScene.h), IceBenchMeasure.cxx,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's groups: which configurations are timed against plain VTK, on which object and scene.
 #include "IceBench.h"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's machine: the CPU, the GL renderer and version, the back end and VTK, as the tables,
 // the CSV and the plot report them.
 #include "IceBench.h"

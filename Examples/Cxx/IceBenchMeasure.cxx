@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's measuring: the schedule, every configuration of a group timed in turn (wall clock
 // and CPU time, glFinish after every frame) and the statistics and ratios of the times.
 #include "IceBench.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's command line: the usage text and the checking of every option.
 #include "IceBench.h"
 #include "IceHeadless.h"

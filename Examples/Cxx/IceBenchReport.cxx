@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's output: the tables on standard output, the CSV and the Markdown, and the writing of
 // the files (IceOutputFile: each whole or not at all).
 #include "IceBench.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's scenes: the objects, a renderer per configuration (plain VTK or ice, with the
 // landscape and a moving ball for the dynamic group) and the calibration of screen coverage.
 #include "IceBenchScene.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's scenes: the timed objects, a renderer per configuration and the calibration of the
 // camera distance. Private to ice-bench (IceBenchScene.cxx; used by IceBenchMeasure.cxx and main).
 #ifndef IceBenchScene_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's targets (issue 8, item 4: llvmpipe, ice about 1/5 of 1024x768, ratio to plain VTK):
 // which configuration each target compares and whether it is met.
 #include "IceBench.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // How ice-render and ice-bench write their files: never a partial file, never the user's old file
 // lost to a failed or interrupted run, every write checked.
 //

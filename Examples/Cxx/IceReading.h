@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Running VTK readers on files the user hands to ice-render: one clean line for any failure, and
 // a reader's crash on a broken file contained in a child process.
 #ifndef IceReading_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-render: renders a model as ice in front of an environment: to an image, a turntable of
 // images (and a video), or in an interactive window.
 #include "IceHeadless.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-render's command line: what to render, where, and the look (IceLook's settings, presets).
 #ifndef IceRenderOptions_h
 #define IceRenderOptions_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The default ice scene shared by ice-render, ice-bench and the image tests: a model turned to
 // ice in front of an environment cube map that is also drawn as the skybox.
 #ifndef IceScene_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-render --turntable: images all around the model, and a video of them when ffmpeg is there.
 #ifndef IceTurntable_h
 #define IceTurntable_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-render's interactive viewer: a trackball camera, keys that toggle each effect and step the
 // main parameters, an on-screen legend of the keys and current values, the frame time, and a key
 // that saves a screenshot and the current look as a preset.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """VTK Ice in ParaView: an iso-surface of ParaView's Wavelet source drawn as ice in the Ice View,
 beside ordinary representations, refracting a dynamic cube map of the scene.
 

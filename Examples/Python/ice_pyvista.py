@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """An ice sphere and an ice block among PyVista's own objects, written to ice_pyvista.png.
 
     venv/bin/python Examples/Python/ice_pyvista.py        (after pip install ., README.md)

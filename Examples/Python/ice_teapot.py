@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Render the ice teapot with two-sided refraction to ice_teapot.png.
 
     PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 Examples/Python/ice_teapot.py

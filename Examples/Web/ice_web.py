@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """VTK Ice in the browser: a trame app that renders the ice on the server (through EGL, no X
 server) and streams its images to the page (trame-vtk's remote view).
 

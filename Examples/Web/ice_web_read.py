@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Reads one uploaded model file for the web viewer, in a child process of its own (VTK's readers
 crash on some broken files; the server must not): ice_web_read.py MODEL OUT.vtp. Exit status 0:
 OUT.vtp written; 1: the problem is the last line printed; anything else: the reader crashed.

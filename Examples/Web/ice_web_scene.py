@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The web viewer's scene: a model as ice in a small landscape under vtkIceCubeMapSource's sky,
 rendered off screen on the server (EGL without an X server), and the look's settings applied by
 name through vtkice.vtkIceLook, the table ice-render's options and presets use.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Seeded noise shared by the procedural sources: the same seed gives the same numbers on every
 // platform (integer hashing, unlike std:: distributions, is not implementation defined).
 #ifndef vtkIceNoise_h

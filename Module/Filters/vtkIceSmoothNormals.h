@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Smooth point normals for the module's surfaces: no splitting at sharp edges (the ice shader
 // wants one normal per point), orientation made consistent, no cell normals.
 #ifndef vtkIceSmoothNormals_h

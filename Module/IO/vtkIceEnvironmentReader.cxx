@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIceEnvironmentReader.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceCubeMapTexture.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceEnvironmentReader
  * @brief   Reads an environment cube map from image files (OpenImageIO).

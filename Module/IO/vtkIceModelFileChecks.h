@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Checks of model files that VTK 9.1's readers take on trust: a truncated binary PLY makes
 // vtkPLYReader read past its points (a crash) and a truncated ASCII one floods stderr; a binary
 // STL whose header promises more (or fewer) triangles than the file holds is read in part, or

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Impl
   // Keep only back faces (front faces culled) and store their world-space normal and view depth
   // (alpha: 0 where there is no ice, so kept above 0).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 uniform float iceBumpStrength;
 uniform float iceBumpFrequency; // noise cycles per model unit

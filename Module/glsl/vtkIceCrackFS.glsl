@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 uniform sampler2D iceDepthInterval; // front (R) and back (G) view depth of the ice
 uniform int iceCrackClip;           // 1: discard outside the ice's depth interval

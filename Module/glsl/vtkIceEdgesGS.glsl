@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // VTK draws edges by growing each triangle in its geometry shader by half a line width on the
 // screen, with the varyings of the original corners: inside the triangle they are then

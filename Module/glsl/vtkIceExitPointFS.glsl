@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // Two-sided refraction through the exit point (TwoSidedExitPoint), beyond the paper's eq 1: the
 // eye ray is refracted at the front surface (eq 2), followed through the ice to where it leaves,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // Glistening ice and snow after Tobias Zirr, "Rendering Ice in Liquidiced": direct light (Phong
 // with a very broad, soft specular, both on a subtle wavy bump), rim light, and two layers of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // The ice's cracks and air along the view ray from a front-surface point to the nearest back face
 // (its view depth is in the back-face target's alpha), intersected with every crack sheet and air

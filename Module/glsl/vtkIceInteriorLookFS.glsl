@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // The interior's look shared by the paper's passes and the single pass (vtkIceInteriorLook.h
 // defines the ICE_ constants before this).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 uniform sampler2D iceNormalMap; // tangent-space normals, RGB in [0, 1]
 uniform float iceBumpStrength;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Ice optics of Seipel & Nivfors, "Efficient rendering of multiple refractions and reflections in
 // natural objects". Every function here is mirrored on the CPU by vtkIceOpticsReference.h: change
 // both together. Vectors are in world space; e runs from the camera to the surface point.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // CPU reference of the ice optics in vtkIceOptics.glsl and vtkIceSurface*.glsl, written with GLM
 // in double precision. Tests evaluate it per pixel and compare with what the GPU rendered, so the
 // two must stay equation for equation the same. Vectors are in world space; e runs from the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // The environment as a rough (frosted) surface shows it, for vtkIcePrefilteredEnvironment: level k
 // of the result holds, per direction n, the environment averaged over the GGX lobe of roughness

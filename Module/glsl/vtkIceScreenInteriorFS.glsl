@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::SurfaceDec
 // The interior vtkIceScreenInterior evaluated for this pixel, as vec4(add, keep).
 uniform sampler2D iceScreenInterior;

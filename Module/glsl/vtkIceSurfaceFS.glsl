@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Environment
 // The environment the surface refracts and mirrors (also the screen-space interior's, whose crack
 // sheets mirror it).

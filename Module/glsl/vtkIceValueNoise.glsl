@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // Value noise on the integer lattice, for bumps fixed in an object's own space.
 float iceHash(vec3 p)

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Uniforms
 // The camera and the prop's matrices, for the ice surface's program and for the screen-space
 // interior's quad (vtkIceScreenInterior), which has no vertex outputs.

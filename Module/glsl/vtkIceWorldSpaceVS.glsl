@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 in vec3 iceNormalMC;
 uniform mat4 iceMCWCMatrix;       // model (VBO shift/scale included) to world

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Workarounds for Debian's ParaView packages, included before find_package(ParaView). They change
 # nothing on the system and nothing where the packages are right (Debian 12's ParaView 5.11).
 

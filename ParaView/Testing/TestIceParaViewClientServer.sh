@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # Dynamic-environment ice through pvserver: pvpython renders the scene in one process, then
 # connects to a pvserver on 127.0.0.1 (a free port) and renders it on the server (remote
 # rendering) and on the client (client-side rendering); both must equal the one-process image

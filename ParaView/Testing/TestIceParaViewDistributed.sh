@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The distributed scene (Python/distributed_scene.py) in pvbatch on 1, 2 and 4 MPI ranks: the 2-
 # and 4-rank images must equal the 1-rank image, ice included, and every object must be whole
 # on one rank; with a translucent sphere added, 2 ranks must still render the 1-rank image

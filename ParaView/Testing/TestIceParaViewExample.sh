@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The ParaView example three ways: its pvpython script, its state file loaded in pvpython, and
 # the script in pvbatch (one process). All three images must agree, and show ice.
 set -euo pipefail

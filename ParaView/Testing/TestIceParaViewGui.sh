@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The ParaView application with the plugin: a sphere shown as Ice with its Ice property group;
 # a screenshot of the whole screen (the window) goes to $out/paraview-gui.png.
 set -euo pipefail

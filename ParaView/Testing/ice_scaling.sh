@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The parallel scaling figure of Documentation/paraview.md: distributed_scene.py's benchmark scene
 # (500 ice chunks over a terrain) in pvbatch on 1, 2 and 4 ranks, plotted to a PNG.
 #   ParaView/Testing/ice_scaling.sh build-paraview out-dir [chunks]

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Shared by the glistening tests: a clear-sky cube map without bright spots, a large glistening
 // plane receding to the horizon, and the sparkle detector.
 #ifndef IceGlisteningScene_h

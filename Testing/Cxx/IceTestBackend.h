@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Included in the generated test driver (IceCxxTests.cxx): before each test, the back end named
 // by VTKICE_BACKEND (x, egl, osmesa or auto) is installed, so every vtkRenderWindow the tests
 // create renders through it. Without VTKICE_BACKEND the tests use VTK's own (X) windows.

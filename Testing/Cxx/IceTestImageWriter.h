@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Writes test images with OpenImageIO, behind an interface without C++ library types: the tests
 // built against a `vtk` wheel use its old libstdc++ ABI, OpenImageIO the new one (as
 // Module/vtkIceImageFile.h does for reading).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Resource measurements for the long-running and lifecycle tests: OpenGL errors, a census of the
 // OpenGL object names alive in the current context, and the process's memory.
 #ifndef IceTestResources_h

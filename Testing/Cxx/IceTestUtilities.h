@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Shared helpers for the VTK Ice C++ tests: pixel capture, statistics, strict baseline
 // comparison and error capture.
 #ifndef IceTestUtilities_h

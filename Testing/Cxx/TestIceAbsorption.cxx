@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Absorption by the path in the ice (Beer-Lambert, AttenuationColor and AttenuationDistance)
 // against the CPU reference: an ice sphere with IndexOfRefraction 1 and no reflection passes every
 // view ray straight through, so each interior pixel must be the skybox behind it times the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Air bubbles and the bumpy surface: in both interior methods air makes the inside of the ice
 // whiter, more so with Milkiness, and no bubble pixel lies outside the silhouette (bubbles drawn
 // in green), the single pass showing the bubbles where the paper's passes draw them; bumps change

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The default ice-render scene rendered through one back end (--backend x|egl|osmesa), against
 // the reviewed X render (the TestIceTeapot baseline): VTK's image comparison plus the strict one.
 // Then pixel checks that the ice itself is drawn (hiding the teapot changes the pixels inside its

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A back end that cannot be used fails with one clear line, and a working back end is still
 // used afterwards. Unavailability is real, not simulated: X without DISPLAY, an EGL device index
 // that does not exist (VTKICE_EGL_DEVICE), an OSMesa library that does not exist

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIceMapper::CullHiddenBackfaces: the ice skips its back faces only where none can be seen.
 // - A closed block and sphere seen from outside are drawn culled, and the pictures (clean optics,
 //   the single-pass and the paper's interior) equal those drawn with every face.

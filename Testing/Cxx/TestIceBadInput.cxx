@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input for vtkIceMapper gives one clear VTK message and leaves the rest of the scene
 // rendering:
 // - input that cannot be ice (empty polydata, lines only, vertices only, NaN or infinite

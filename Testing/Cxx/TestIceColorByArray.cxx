@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Colour by array, as any VTK mapper: with ScalarVisibility and point scalars the mapped colour
 // tints the ice point by point (refraction stays); with ScalarVisibility off the ice keeps
 // IceColor, and off is the default (input scalars tint only when asked to). The sphere's

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Cracks (paper section 3.3), in both interior methods: drawn in red (DebugCracksClipped) no
 // crack pixel lies outside the ice's silhouette while many lie inside, and unclipped they do stick
 // out; the highlights change the picture inside the ice only and brighten with the light; the same

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Cracks in a concave object, a torus seen from above at an angle. Paper passes: in DepthInterval
 // mode the interval between the near and far side of the ring also covers the hole, so cracks
 // show there (the paper's known limit); Geometry mode clips them to the surface on the CPU and

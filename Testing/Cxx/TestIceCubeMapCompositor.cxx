@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIceCubeMapPass with a vtkIceCubeMapCompositor, the hook distributed rendering composites the
 // dynamic cube map through (ParaView's plugin: vtkPVIceCubeMapCompositor over MPI). A stand-in
 // compositor plays a second process:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The dynamic cube map keeps HDR light: through ice tinted 0.2, an environment of float texels
 // at 4.0 looks the same whether the ice samples the environment directly (static) or the cube
 // map vtkIceCubeMapPass renders of the scene around it (dynamic), and clearly brighter than an

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIceCubeMapPass: an ice sphere inside a room whose six walls have six colours, each wall in
 // four quadrants of different brightness. Seen from the sphere's centre the walls fill the cube map
 // face by face, so the GLM reference with "colour of the wall quadrant the direction points at"

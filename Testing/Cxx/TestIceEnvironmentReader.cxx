@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIceEnvironmentReader: writes environments with OpenImageIO into the temporary folder (-T)
 // and reads them back. Six 8-bit PNG faces, a horizontal cross and an RGBA vertical cross of
 // vtkIceCubeMapSource's DirectionTest faces must come back texel for texel (+-1) at the texel

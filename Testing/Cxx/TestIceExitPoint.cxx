@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Two-sided refraction measured against the truth. An ice sphere, and an ellipsoid (the sphere
 // scaled by its actor), over the DirectionTest cube map (a smooth colour per direction, so a
 // colour error is a direction error) are rendered with the paper's blended normals (eq 1), with

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The paper's Figure 1 setting: an ice block with cracks, air and a bumpy surface in a small
 // landscape, dynamic cube map and two-sided refraction (the defaults), against a reviewed
 // baseline.

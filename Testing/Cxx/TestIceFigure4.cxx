@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Figure 4 of the paper: the ice teapot with two-sided refraction (left) and one-sided refraction
 // (right), cracks and air off. Checked against a reviewed baseline, and the two halves must differ
 // measurably inside the teapot while being the same (within rounding) outside it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The paper's Figure 5 with the ice block: (a) front depth, (b) back depth, (c) a crack unclipped,
 // (d) the crack clipped, cracks in red. Checked against a reviewed baseline; the numbers behind the
 // views are checked in TestIceCracks.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Glistening ice and snow (Liquidiced) as options of vtkIceMapper, on a large plane receding to
 // the horizon: isolated bright sparkle pixels in the near, middle and far thirds (none with
 // Glistening off), crisp in the distance (as bright as near ones, one pixel) and facets up close;

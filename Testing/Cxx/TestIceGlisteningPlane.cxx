@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Glistening ice on a large plane, near and far: on the left the ground at the viewer's feet, each
 // crack cell a facet of several pixels, some glinting; on the right the plane to the horizon
 // towards a low sun, single-pixel glints along the sun's path all the way to the horizon. Checked

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Glistening ice and snow on the teapot in the sky environment, lit by the sky's sun:
 // SnowAmount 0 (ice: the environment refracted and reflected, a soft highlight, rim light and
 // glints), 0.5 and 1 (snow: white and diffuse, bluish in the shadow, rim light and glints).

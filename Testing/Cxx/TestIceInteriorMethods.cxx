@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The two interior methods side by side: the full look (2 cracks, 19 air planes, bumps; the same
 // seeds; the cracks' sheets off, which the paper's passes do not draw) on the block and the
 // teapot, rendered with the paper's passes and in the single pass.

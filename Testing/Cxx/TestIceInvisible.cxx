@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // With RefractionRatio 1 and a huge FresnelPower the ice passes every view ray straight through,
 // so it must be invisible against a skybox of the same cube map: this pins the mapper's cube-map
 // lookup to vtkSkybox's convention. Default ice must, by contrast, be clearly visible.

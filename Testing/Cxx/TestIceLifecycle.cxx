@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The ice through the life of an application's windows and scenes:
 // - closing the window (Finalize) releases the ice's graphics resources (with either interior
 //   method), and the window opened again renders the same picture; so does releasing them

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Renders ice spheres in a synthetic cube map and compares every interior pixel with the GLM
 // reference (vtkIceOpticsReference.h) evaluated for that pixel's view ray: one-sided (eqs 2-4)
 // without vtkIcePass, and two-sided (eq 1 with the sphere's analytic back normal) with it.

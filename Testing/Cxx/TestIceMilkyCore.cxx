@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The milky core (MilkyCoreRadius) against the CPU reference: an ice sphere with
 // IndexOfRefraction 1, no reflection and no absorption passes every view ray straight through,
 // so each interior pixel must be the skybox behind it seen through the core: mixed towards the

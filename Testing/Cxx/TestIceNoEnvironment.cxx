@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Without an environment texture the ice still renders, using the built-in sky, and the mapper
 // warns exactly once (not every frame), or not at all with WarnWithoutEnvironment off. A 2D
 // environment texture is a panorama: drawn, no warning (TestIcePanoramaEnvironment checks how).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The optics' GLSL functions run on the GPU against their CPU mirrors (vtkIceOpticsReference.h)
 // over a sweep of their arguments, each written by a full-screen quad into a float texture and read
 // back: iceCrackReflectance (two indices, both signs of the cosine), iceFresnel, iceTransmittance

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A 2D equirectangular panorama as the renderer's environment (as ParaView's skybox sets it): the
 // ice converts it to a cube map, and with RefractionRatio 1 it is invisible against a vtkSkybox
 // of sphere projection oriented as ParaView orients it. An sRGB panorama is shown as the skybox

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIcePass never touches the user's camera: ten renders of an unchanged view of the full ice
 // (two-sided refraction, cracks and air, so the back-face pass runs, and the depth-interval pass
 // with the paper's interior passes, and the dynamic cube map) fire no ModifiedEvent on the camera

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Two-sided ice stays correct (GLM reference, per pixel) when the window is resized several times,
 // with two ice actors in one renderer, and with two renderers (viewports) in one window. The
 // back-face normal texture must follow the viewport size each time.

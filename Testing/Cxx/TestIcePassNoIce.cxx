@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // A scene without ice renders pixel for pixel the same with vtkIcePass as without it: opaque,
 // lit actors, a translucent actor and a skybox; with order-independent translucency and with
 // depth peeling.

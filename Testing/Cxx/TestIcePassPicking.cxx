@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Hardware picking and selection with vtkIcePass: a cone (plain VTK) and an ice sphere. With the
 // pass, vtkPropPicker picks the same prop under each of a grid of pixels as without it (the ice
 // included), vtkRenderedAreaPicker finds the same props in each half of the window, a pick list

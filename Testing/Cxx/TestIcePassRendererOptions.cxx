@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIcePass keeps the renderer's own options: for each of UseHiddenLineRemoval, UseSSAO,
 // UseFXAA, and depth peeling with MaximumNumberOfPeels and OcclusionRatio, a scene without ice
 // renders pixel for pixel the same with the pass as without it, with the option off, switched on

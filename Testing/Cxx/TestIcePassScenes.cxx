@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Varied VTK scenes without ice render pixel for pixel the same with vtkIcePass set on every
 // renderer as without it: translucency (order-independent and depth peeling), 2D overlays, a
 // second layer (opaque), and a volume behind a translucent surface with and without depth

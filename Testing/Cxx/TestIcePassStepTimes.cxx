@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIcePass::MeasureStepTimes: off, every step reads -1; on, the steps that ran in the frame
 // measured last have a time (milliseconds, >= 0) and those that did not run read -1; without its
 // cube-map pass the cube-map step reads -1 again. The scene: a cracked ice block with the paper's

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Stereo with vtkIcePass: set before the first render, a red-blue stereo window without ice draws
 // pixel for pixel what it draws without the pass (it used to equal StereoRenderOff: both eyes
 // from the middle); switched on after the first render and off again, it follows; and with ice

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Several ice objects with their own parameters:
 // - Two ice blocks side by side in one renderer, A left, B right. A has cracks and air, B has none:
 // drawn in red (DebugCracksClipped), no crack pixel of A lies

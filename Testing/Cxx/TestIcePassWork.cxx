@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The ice passes skip work that does not show, without changing a pixel: the depth-interval pass
 // runs only when something reads it, the back-face pass only for two-sided ice; a moving camera
 // modifies no mapper; the back-normal and depth-interval textures are cleared only where the ice is

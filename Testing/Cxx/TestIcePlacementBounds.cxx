@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkIceMapper::PlacementBounds, which distributed rendering gives every piece of an ice object:
 // - a piece (the left of two blocks) placed in the bounds of the whole (both blocks) draws its
 //   cracks, air and bumps over its own pixels as the whole does; without PlacementBounds it does

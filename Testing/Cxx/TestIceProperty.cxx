@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The material object, one behaviour per case (--case NAME):
 // - mapper-setters: the mapper's look setters and getters are its vtkIceProperty's; the mapper's
 //   modification time follows its property's; SetIceProperty(nullptr) gives the defaults back;

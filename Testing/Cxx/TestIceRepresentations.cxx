@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Ice drawn the ways VTK users draw surfaces, with vtkIcePass (two-sided refraction, cracks and
 // air, so every sub-pass sees the same actor):
 // - EdgeVisibility: edges are drawn over the refracting ice, and every pixel at least two pixels

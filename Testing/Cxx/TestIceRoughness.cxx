@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Frost (Roughness) against the brute-force integral: an ice sphere with IndexOfRefraction 1 and
 // no reflection passes every view ray straight through, so a rough sphere must show at each
 // interior pixel the environment averaged over the GGX lobe around the view ray:

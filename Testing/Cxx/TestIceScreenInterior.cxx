@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The screen-space interior (InteriorScreenSpace) against the single pass it evaluates once per
 // pixel instead of once per fragment: the same look, so the same pictures up to the pixels along
 // the ice's silhouette (where the single pass shades fragments whose pixel centre lies outside

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The places in VTK's shaders where the ice's code goes, on the VTK this build uses (each lane
 // builds against its own): the ice sphere is drawn with the pass, then with its edges shown
 // (VTK adds a geometry shader), and every program VTK compiles for the mapper must carry the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // When VTK's shaders lack a place the ice's code goes (here the fragment shader's
 // //VTK::Light::Impl, taken out of the template by a mapper made for the test), the mapper says
 // so once, naming the place and the VTK, instead of drawing wrong ice in silence.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Soak: the full ice (two-sided refraction, a cube map of the scene rendered every frame, cracks,
 // air, bumps) for many frames while the application does what long-running applications do.
 // Every 100 frames (one cycle) the window is resized to a random size, ice actors are added and

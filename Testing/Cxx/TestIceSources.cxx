@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The model sources of the paper's three objects: triangle counts near the paper's figures,
 // normals present and outward, closed block surface, and seeds that reproduce exactly.
 #include "vtkIceBlockSource.h"

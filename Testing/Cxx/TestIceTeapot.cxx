@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // The default ice scene of ice-render (teapot, procedural sky) at 400x300, against a reviewed
 // baseline: VTK's image comparison plus a strict numeric one.
 #include "IceScene.h"

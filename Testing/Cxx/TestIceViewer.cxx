@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-render's interactive viewer, driven by key events sent to its interactor (as typing in its
 // window does): each key changes what it says on the ice mapper, the cube-map pass or the legend,
 // and the rendered picture where it should; the legend shows the current values, the readout the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // ice-render's interactive legend at the window's size: at 1024x768 it lists every key at a
 // readable size in a corner; at 400x300 it shrinks to one line ("h  keys") that leaves the model
 // alone, and 'h' brings the whole list at the smallest readable size; resizing back gives the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: vtkIceWorldSpaceMapper::CheckInput on arbitrary polydata, and what the mapper
 // does with input it accepts (the smooth normals of vtkIceSmoothNormals). The bytes give the
 // points (any float, NaN and infinities included), the cells of each kind (any point id, any

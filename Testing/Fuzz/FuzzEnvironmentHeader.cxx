@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: vtkIceEnvironmentReader's checks of an environment image's header (size,
 // layout, limits) before any pixel is read. The first byte picks the file type (PNG, JPEG,
 // Radiance HDR, OpenEXR), the rest is the file; the reader must answer with its information or

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: ice-render's checks of STL and PLY files (IceModelFile), which run before
 // VTK's readers and must answer every file with "" or one sentence. The first byte picks the
 // check; the rest is the file.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer harness: ice-render's preset files (IceLook::ReadPreset: "NAME = VALUE" lines,
 // checked against the library's ranges before anything is applied). Every file gives either a
 // list of assignments that apply cleanly or one problem, never a fault.

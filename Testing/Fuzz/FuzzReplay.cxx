@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs a libFuzzer harness once on each file named (or in each folder named) without libFuzzer:
 // the seeds and every input that once crashed (Regressions/) replayed by the ordinary test suite,
 // under each build's compiler and, in ./ice.sh sanitize, under ASan and UBSan.

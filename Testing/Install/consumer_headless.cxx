@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Uses the installed VTKIce::Headless: renders a window without X (egl, else osmesa).
 #include "IceHeadless.h"
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.use_backend() refuses a name it does not know with a ValueError naming the choices,
 and changes nothing (the next render window is VTK's usual one)."""
 import sys

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.vtkIceEnvironmentReader from Python: one error for a missing file, and six face images
 written with VTK (top row first) read back exactly. Run with Debian's /usr/bin/python3.
 """

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Glistening ice and snow from Python: vtkIceMapper's Glistening options with VTK's clamping,
 vtkIceGlisteningTexture's random unit vectors, and a glistening plane that renders: glints with
 Glistening on (none off), white snow where the ice is dark. Run with Debian's /usr/bin/python3.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.use_backend() lets a script without an X display render ice.
 
 DISPLAY is removed before VTK is imported, as on a server; without vtkice.use_backend() Debian's

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice from Python at and beyond its limits.
 
 - Every clamped vtkIceMapper parameter: infinities and values past the range are clamped to the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.vtkIceLook: the look's settings table (the one ice-render's options and presets use)
 from Python, as the web viewer reads it. No render window: the settings act on objects only.
 Run with Debian's /usr/bin/python3 (ctest) or the wheel's venv (pytest Testing/Wheel).

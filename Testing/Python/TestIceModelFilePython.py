@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.vtkIceModelFile: ice-render's checks of a model file before a reader reads it, from
 Python (the web viewer's uploads). Files are made here; nothing is rendered.
 """

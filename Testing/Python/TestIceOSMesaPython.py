@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.use_backend("osmesa") either renders ice or refuses with a line saying what to do.
 
 With VTK < 9.4 OSMesa needs VTK's GL calls routed to libIceHeadless, which Python (having

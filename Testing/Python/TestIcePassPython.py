@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkIcePass from Python: two-sided refraction changes the ice, both two-sided methods (the
 paper's blended normals, the exit point) are selectable and differ, the one-sided switch restores
 the pass-less image exactly, and a scene without ice is unchanged by the pass.

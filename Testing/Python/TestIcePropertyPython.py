@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.vtkIceProperty from Python: the look as one object, shared between mappers, and the
 mapper's own setters of its parameters. No render window: the settings act on objects only.
 """

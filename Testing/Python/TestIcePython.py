@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice from Python: properties with VTK's clamping, and ice that renders correctly.
 
 With RefractionRatio 1 and a huge FresnelPower, ice is invisible against a skybox of the same

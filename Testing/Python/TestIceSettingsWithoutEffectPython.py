@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """A setting that cannot show says so, once: snow needs Glistening, absorption needs vtkIcePass
 (the back faces give the path in the ice), the milky core the single-pass interior. Where it
 shows, nothing is said."""

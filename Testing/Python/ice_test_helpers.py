@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Helpers shared by the Python tests: read a render window back, compare image regions."""
 import vtk
 import vtkice

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Linked into the programs of a VTKICE_SANITIZE build that LeakSanitizer checks (the C++ test
 // driver and ice-render). Mesa unloads its driver (swrast_dri.so, llvmpipe) when the last X or
 // EGL display closes, before LeakSanitizer reports at exit: what the driver allocated and never

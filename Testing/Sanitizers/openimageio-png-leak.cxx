@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // Proof that OpenImageIO leaks by itself when it reads a truncated PNG
 // (Testing/Sanitizers/lsan-environment-reader.supp). OpenImageIO 2.4's PNG reader reports a
 // short read from libpng's read callback with png_error(..., geterror().c_str()): png_error

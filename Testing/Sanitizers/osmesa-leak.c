@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /* Proof that libOSMesa leaks by itself (Testing/Sanitizers/lsan.supp): a 3.2 core context made
    current on a 1x1 buffer, released and destroyed, as the osmesa back end does. Mesa 22.3.6
    (Debian 12) never frees the buffer OSMesaMakeCurrent creates; LeakSanitizer reports 480 bytes

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The Debian package of this build: cpack makes it; dpkg-deb shows its name, its dependencies on
 # Debian's packages and its files; lintian finds no error in it; unpacked into a fresh folder
 # that nothing else uses, its CMake package builds and runs the installed-consumer example, its
@@ -37,6 +39,9 @@ for file in ./usr/bin/ice-render ./usr/bin/ice-bench ./usr/include/vtkice/vtkIce
   ./usr/share/doc/vtkice/changelog.gz ./usr/share/doc/vtkice/Documentation/usage.md; do
   echo "$contents" | grep -qx "$file"; check "holds $file" $?
 done
+dpkg-deb --fsys-tarfile "$deb" | tar -xO ./usr/share/doc/vtkice/copyright |
+  grep -q "^License: BSD-3-Clause$"
+check "its copyright file gives the licence, BSD-3-Clause" $?
 if command -v lintian >/dev/null; then
   lintian "$deb" >"$work/lintian.txt" 2>&1
   sed 's/^/     /' "$work/lintian.txt" | grep -v "root privileges"

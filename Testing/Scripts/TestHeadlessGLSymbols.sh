@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The osmesa back end works only if every GL function that VTK's OpenGL libraries and VTK Ice
 # import directly from libGL/libOpenGL is defined by libIceHeadless (IceHeadlessGL.cxx), and if
 # programs load libIceHeadless before those libraries. This checks both with nm and readelf, so a

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # ice-bench --quick runs and writes a well-formed table, CSV, Markdown and plot; bad arguments give
 # one line and exit 2. No timing is checked: speed is measured by ice-bench, never by a test.
 # usage: TestIceBench.sh ICE_BENCH WORK_DIR

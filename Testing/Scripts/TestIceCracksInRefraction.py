@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """ice-render --cracks-in-refraction (cracks drawn into the back faces, bending the refraction)
 draws no dark line where a crack is seen edge-on: the block of the paper look has no more dark
 pixels with it than without it (a crack edge-on once swung the refraction into the dark trees of

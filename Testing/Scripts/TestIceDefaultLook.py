@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """ice-render's default look reads as ice, measured: thick ice is bluer than thin ice, at most 1 %
 of the ice's pixels are clipped to white, the centre of the block is milkier than its rim, the
 cracks show as sheets (over their area and along their outline, not only as highlights).

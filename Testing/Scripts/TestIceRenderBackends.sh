@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # ice-render's --backend: the default command without DISPLAY writes ice.png through EGL with the
 # picture of the X path, and so does osmesa; auto picks x, then egl, then osmesa; a forced back
 # end that is not available gives one line and exit 1.

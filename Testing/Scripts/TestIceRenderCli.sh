@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # ice-render's command line: renders on good input; on bad input prints one line starting with
 # "ice-render:" and exits non-zero, never crashing.
 # usage: TestIceRenderCli.sh ICE_RENDER WORK_DIR

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """ice-render as a tool: every look option changes the picture, the ice's own settings only where
 the ice is; values outside the library's range are refused with that range in the message;
 presets (shipped and written by --print-preset) round-trip to the same picture; a turntable

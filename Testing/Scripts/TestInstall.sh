@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # `cmake --install` to a prefix, then use that prefix as users would: import vtkice with
 # Debian's Python, build and run a project that calls find_package(VTKIce) (with
 # VTKIce::Headless), and run the installed ice-render without X.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 # .ci/apt-install.sh on a machine where another program holds the package lock. apt-get and dpkg
 # are fakes on PATH that log their calls; a second process holds a POSIX lock (as dpkg takes

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 # The table that ends ./ice.sh test and ./ice.sh lane (.ci/stages.sh), on made-up stages.
 # usage: TestStageTable.sh SOURCE_DIR WORK_DIR CASE

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Numeric comparison of two RGB(A) images of the same size, as in the C++ tests' strict check.
 
 usage: compare_images.py A.png B.png [--alternatives]

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """What the scripts that test ice-render's pictures share: one line per check, rendering to a PNG
 and reading its pixels back (Debian's /usr/bin/python3, for vtk)."""
 import os

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Fails on an include cycle among the files of a folder (Module/ by default).
 
 A component is a header with its source (vtkIceMapper.h and vtkIceMapper.cxx); component A

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The long soak: TestIceSoak for 10 000 frames (or $1), reporting every figure even after a
 # failure. Needs a build (./ice.sh test-vtk builds one). Runs on the display, or under Xvfb when there
 # is none; VTKICE_BACKEND=egl (or osmesa) renders without X instead.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # valgrind memcheck on one full-ice run: one cycle of the soak (TestIceSoak --frames 100
 # --small: two-sided refraction, a cube map of the scene every frame, cracks, air, bumps, ice
 # actors added and removed, a shared mapper, the pass removed and set again, resizes) in a small

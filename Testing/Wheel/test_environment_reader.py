@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkIceEnvironmentReader in the installed package beside the wheel: it reads through Debian's
 OpenImageIO (the new libstdc++ ABI) while VTK and the package use the wheel's old one. PNG, JPEG and
 HDR panoramas and a PNG cross load with the right layout and colours (EXR: Cxx.TestIceEnvironmentReader

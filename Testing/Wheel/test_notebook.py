@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Examples/Python/ice_jupyter.ipynb executed as Jupyter would (nbclient, a kernel of this venv),
 without an X server: it shows ice with PyVista's trame server backend and writes the picture,
 and the same scene with a plain surface."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The vtkice package installed by `pip install .` beside the vtk wheel (./ice.sh wheel runs these
 under pytest in build-wheel/venv, without an X server: VTK >= 9.4 renders through EGL then)."""
 import os

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkice.pyvista: ice in a PyVista plotter (vtk wheel, off screen, no X server)."""
 import numpy as np
 import pytest

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The web viewer (Examples/Web, ./ice.sh web) in a real browser: Debian's Chromium, headless,
 driven through Debian's chromedriver (nothing is downloaded). The server renders through EGL
 without an X server and listens on 127.0.0.1 only, on a free port. The tests run in order on

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The web viewer's scene without a browser (Examples/Web/ice_web_scene.py): the controls come
 from vtkice.vtkIceLook, uploads are checked as ice-render checks its --model, a screenshot is a
 PNG of the picture."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """VTK Ice: real-time ice rendering for VTK (Seipel & Nivfors).
 
 Import ``vtk`` (or the ``vtkmodules`` it needs) first, then use

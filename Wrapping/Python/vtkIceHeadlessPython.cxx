@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkice._headless: the project's render window back ends (Headless/IceHeadless.h) for Python,
 // so that a script on a machine without an X display renders through EGL or OSMesa as
 // ice-render does. vtkice.use_backend() is its public face (Wrapping/Python/__init__.py).

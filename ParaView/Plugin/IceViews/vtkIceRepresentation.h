@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceRepresentation
  * @brief   ParaView's "Ice" representation: a surface drawn by vtkIceMapper.

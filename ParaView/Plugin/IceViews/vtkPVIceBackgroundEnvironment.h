@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVIceBackgroundEnvironment
  * @brief   A cube map of a view's background as the camera shows it, for ice to refract.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVIceMapper
  * @brief   vtkIceMapper that refracts the view's background where the view has no environment.

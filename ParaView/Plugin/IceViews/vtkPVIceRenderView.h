@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVIceRenderView
  * @brief   ParaView's "Ice View": a render view whose geometry is rendered through vtkIcePass.

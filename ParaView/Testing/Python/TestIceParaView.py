@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """The Ice representation and the Ice View in pvpython: pixels against Surface, multiblock input,
 colour by array, parallel projection, the skybox line-up, reviewed baselines."""
 import os

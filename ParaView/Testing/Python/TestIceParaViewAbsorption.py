@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Absorption in the Ice View: with Absorption on, eta=1 ice (refraction ratio 1, no reflection)
 in front of a single-colour background shows that colour times the transmittance of the path
 through it, c^(d / D) (glTF's attenuation colour c and distance D): at the centre of a sphere of

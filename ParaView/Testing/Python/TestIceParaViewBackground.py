@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Without a skybox the ice shows the view's own background: eta=1 ice (refraction ratio 1, no
 reflection) is invisible against a single-colour and a gradient background, in the Render View
 and the Ice View. Before, the ice showed a built-in sky (green hills, a horizon) instead."""

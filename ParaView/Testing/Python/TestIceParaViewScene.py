@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Everything else keeps working around ice: a scene of ParaView's own representations (surface,
 wireframe, translucent surface, volume, a selection), orientation axes, a scalar bar and a text
 annotation looks the same in the Ice View as in ParaView's Render View, pixel for pixel; with an

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Dynamic-environment ice in one process or through a pvserver.
 
     pvpython client_server_scene.py builtin image.png

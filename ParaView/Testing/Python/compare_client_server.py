@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """builtin.png remote.png local.png: the client/server renderings equal the one-process one.
 
 Dynamic-environment ice through a pvserver (Python/client_server_scene.py): rendered on the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """prefix translucent-prefix: compares the images and per-rank statistics that distributed_scene.py
 wrote for 1, 2 and 4 ranks (prefix-N.png, prefix-N-noice.png, prefix-N-<rank>.txt), and its
 images with a translucent sphere on 1 and 2 ranks (translucent-prefix-N.png)."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """script.png state.png pvbatch.png: the three renderings agree and the ice differs from the
 example rendered as a plain surface would be (checked by its colour spread)."""
 import os

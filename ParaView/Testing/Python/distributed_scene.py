@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """A scene for distributed rendering: ice objects and ordinary data that ParaView's partition
 spreads over the ranks, a dynamic cube map, cracks and air.
 

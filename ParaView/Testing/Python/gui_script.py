@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Run by the ParaView GUI (paraview --script): the plugin, found through PV_PLUGIN_PATH, gives
 the sphere an Ice representation with its Ice properties; the result goes to the file named by
 VTKICE_GUI_RESULT, which the test reads."""

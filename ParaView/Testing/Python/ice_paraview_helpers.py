@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Helpers of VTK Ice's ParaView tests: load the plugin, render views to arrays, compare."""
 import os
 import sys

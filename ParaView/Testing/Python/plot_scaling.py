@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """prefix image.png: plots what distributed_scene.py measured with chunks on 1, 2 and 4 ranks
 (prefix-N-<rank>.txt): frame times and memory per rank (Documentation/paraview.md)."""
 import sys

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 """Loads a ParaView state file that uses the Ice plugin and saves its view: state.pvsm image.png"""
 import os
 import sys
