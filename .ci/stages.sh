@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Sourced by ./ice.sh test and ./ice.sh lane: each stage's result in one table at the end.
 #   stage_run NAME COMMAND...  runs COMMAND (its output shown as it comes), records passed or
-#                              failed, the tests it ran (ctest's "out of N" lines, pytest's
-#                              "N passed, M failed" lines) and its minutes; its exit status in
+#                              failed, the tests it ran (ctest's "out of N" lines, pytest's and
+#                              the plain "N passed, M failed" lines) and its minutes; its exit status in
 #                              stage_status. Call it as a plain command, never in an if, && or ||:
 #                              there bash would ignore errexit inside COMMAND's functions
 #   stage_skip NAME WHY        records a stage not run
@@ -25,7 +25,7 @@ stage_failed=0
 stage_count_tests() {
   awk '
     / tests failed out of [0-9]+/ { n += $NF; found = 1 }
-    /^=* *[0-9]+ (passed|failed)/ && / in [0-9.]+s/ {
+    /^=* *[0-9]+ (passed|failed)/ && (/ in [0-9.]+s/ || /^[0-9]+ passed, [0-9]+ failed$/) {
       for (i = 1; i < NF; i++) if ($(i + 1) ~ /^(passed|failed|errors?),?$/) { n += $i; found = 1 }
     }
     END { if (found) print n; else print "-" }' "$1"

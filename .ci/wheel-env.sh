@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+# SPDX-License-Identifier: BSD-3-Clause
 # The `vtk` wheel's Python environment with vtkice installed, made where missing (./ice.sh wheel,
 # ./ice.sh web):
 #   1. a venv in build-wheel/venv with vtk, pyvista and pytest (the versions below)
@@ -29,18 +31,8 @@ fi
 if [ ! -f "$sdk/lib/cmake/vtk/vtk-config.cmake" ] ||
   [ "$(readlink -f "$sdk/vtkmodules")" != "$("$python" -c 'import os, vtkmodules; print(os.path.realpath(os.path.dirname(vtkmodules.__file__)))')" ]; then
   stage "SDK $sdk"
-  # VTK's source archive: where VTKICE_VTK_SOURCE says, else found by name in a folder beside
-  # the checkout (where CI lays it).
-  if [ -z "${VTKICE_VTK_SOURCE:-}" ]; then
-    VTKICE_VTK_SOURCE=$(find "$(dirname "$top")" -mindepth 2 -maxdepth 3 \
-      -name "vtk-$vtk_version-source.tar.xz" -print -quit 2>/dev/null || true)
-  fi
-  if [ -z "$VTKICE_VTK_SOURCE" ]; then
-    echo "./ice.sh wheel: set VTKICE_VTK_SOURCE to VTK $vtk_version's source archive" \
-      "(vtk-$vtk_version-source.tar.xz, VTK's release download)" >&2
-    exit 2
-  fi
-  export VTKICE_VTK_SOURCE
+  . .ci/vtk-source.sh
+  vtkice_vtk_source "$vtk_version"
   VTKICE_PYTHON=$python bash .ci/vtk-sdk.sh "$sdk"
 fi
 sdk=$(cd "$sdk" && pwd)

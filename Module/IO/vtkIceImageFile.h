@@ -1,4 +1,7 @@
-// vtkIceImageFile: the image files vtkIceEnvironmentReader reads, through OpenImageIO, behind an
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkIceImageFile: the image files vtkIceEnvironmentReader reads, through OpenImageIO (here; VTK's
+// readers in vtkIceImageFileVTK.cxx where there is none, VTKICE_IMAGE_READERS), behind an
 // interface no C++ library type crosses (plain structs, char buffers). The `vtk` wheels use the
 // old libstdc++ ABI and Debian's OpenImageIO the new one: vtkIceImageFile.cxx alone talks to
 // OpenImageIO and is compiled with OpenImageIO's ABI, whatever VTK's is (Module/CMakeLists.txt).

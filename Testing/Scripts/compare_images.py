@@ -70,15 +70,21 @@ def compare(a_path, b_path):
                 % (a_path, b_path, pixels, mean, worst, 100.0 * far))
 
 
-def main(a_path, b_path, alternatives=False):
+def compare_with_alternatives(a_path, b_path, alternatives=True):
+    """(ok, the line) for A against baseline B or, with `alternatives`, one of B_1.png, ..."""
     candidates = [b_path]
     stem = b_path[:-4] if b_path.endswith(".png") else b_path
     while alternatives and os.path.exists("%s_%d.png" % (stem, len(candidates))):
         candidates.append("%s_%d.png" % (stem, len(candidates)))
     results = [compare(a_path, candidate) for candidate in candidates]
     passed = [line for ok, line in results if ok]
-    print("ok   " + passed[0] if passed else "FAIL " + results[0][1])
-    return 0 if passed else 1
+    return (True, passed[0]) if passed else (False, results[0][1])
+
+
+def main(a_path, b_path, alternatives=False):
+    ok, line = compare_with_alternatives(a_path, b_path, alternatives)
+    print(("ok   " if ok else "FAIL ") + line)
+    return 0 if ok else 1
 
 
 if __name__ == "__main__":

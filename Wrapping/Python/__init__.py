@@ -12,9 +12,10 @@ from vtkmodules.vtkCommonCore import vtkVersion as _vtkVersion
 _BUILT_AGAINST = "@VTK_VERSION@"
 if _vtkVersion.GetVTKVersion() != _BUILT_AGAINST:
     raise ImportError(
-        "vtkice was built against VTK %s but this Python imports VTK %s (%s): rebuild vtkice "
-        "against this VTK (pip install . with its SDK, see VTK Ice's README)"
-        % (_BUILT_AGAINST, _vtkVersion.GetVTKVersion(), vtkmodules.__file__)
+        "vtkice was built against VTK %s but this Python imports VTK %s (%s): install the vtk it "
+        "needs (pip install vtk==%s) or build vtkice against this VTK (pip install . with its SDK, "
+        "see VTK Ice's README)"
+        % (_BUILT_AGAINST, _vtkVersion.GetVTKVersion(), vtkmodules.__file__, _BUILT_AGAINST)
     )
 
 # One package for the project's modules, as VTK's own are one.
