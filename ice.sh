@@ -8,11 +8,18 @@
 #                                         again, then the trixie and sid lanes; ends with a
 #                                         table of the stages (passed, failed or skipped, tests,
 #                                         minutes), exit 1 when one failed (VTKICE_SKIP_STAGES:
-#                                         words of "vtk wheel paraview fuzz trixie sid" to skip)
+#                                         words of "vtk wheel wheels paraview fuzz trixie
+#                                         sid" to skip)
 #   ./ice.sh test-vtk [ctest options]     the VTK 9.1 stage alone: build, run its tests
 #   ./ice.sh wheel [ctest options]        the wheel stage alone: a venv with the vtk 9.7.0 wheel and
 #                                         PyVista, its SDK, pip install ., every test on VTK 9.7
 #                                         (VTKICE_VTK_SOURCE: VTK 9.7.0's source archive)
+#   ./ice.sh wheels                       manylinux wheels of vtkice for CPython 3.10-3.13 beside
+#                                         PyPI's vtk 9.7.0 into dist/, compiled in a Debian 11
+#                                         chroot (.ci/wheels.sh)
+#   ./ice.sh wheels-test                  those wheels installed as users get them: fresh venvs of
+#                                         this machine's Pythons and of Debian 13's and sid's
+#                                         (chroots with no compiler), rendering without X
 #   ./ice.sh lane trixie|sid [ctest opts] the VTK stage on Debian 13 (VTK 9.3) or sid (VTK 9.6) in a
 #                                         chroot made with mmdebstrap, then PyVista from Debian,
 #                                         then the ParaView stage on its ParaView (5.13, 6.1);
@@ -75,7 +82,7 @@ case "$command" in
   test)
     # Each stage runs whatever the other did; the machine ends as the VTK 9.1 stage needs it. A
     # stage that fails does not stop the others; the table at the end says which did.
-    # VTKICE_SKIP_STAGES: words of "vtk wheel paraview fuzz trixie sid" not to run.
+    # VTKICE_SKIP_STAGES: words of "vtk wheel wheels paraview fuzz trixie sid" not to run.
     . .ci/stages.sh
     me=./$(basename "$0")
     stage() { # stage WORD NAME COMMAND...
@@ -94,6 +101,8 @@ case "$command" in
     stage vtk "VTK 9.1 stage (./ice.sh test-vtk)" \
       env VTKICE_TESTS_ONCE="${VTKICE_TESTS_ONCE:-1}" "$me" test-vtk "$@"
     stage wheel "VTK 9.7 wheel stage (./ice.sh wheel)" "$me" wheel "$@"
+    stage wheels "Ready wheels (./ice.sh wheels)" "$me" wheels
+    stage wheels "Ready wheels installed (./ice.sh wheels-test)" "$me" wheels-test
     stage paraview "ParaView stage (./ice.sh paraview)" "$me" paraview "$@"
     stage paraview "Debian's VTK 9.1 again" bash .ci/install-deps.sh
     stage fuzz "Fuzzing (./ice.sh fuzz 60)" "$me" fuzz 60
@@ -140,6 +149,12 @@ case "$command" in
   wheel)
     exec bash .ci/wheel.sh "$@"
     ;;
+  wheels)
+    exec bash .ci/wheels.sh "$@"
+    ;;
+  wheels-test)
+    exec bash .ci/wheels-test.sh "$@"
+    ;;
   web)
     # The wheel stage's environment (.ci/wheel-env.sh), then the trame app (Documentation/web.md).
     bash .ci/install-deps.sh
@@ -168,7 +183,9 @@ case "$command" in
       "| ./ice.sh test-vtk [ctest options]" \
       "| ./ice.sh fuzz [seconds] | ./ice.sh soak [frames] [seed] [WxH] | ./ice.sh sanitize [ctest options]" \
       "| ./ice.sh bench [ice-bench options] | ./ice.sh valgrind [frames]" \
-      "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options] | ./ice.sh web [--port N]" \
+      "| ./ice.sh paraview [ctest options] | ./ice.sh wheel [ctest options]" \
+      "| ./ice.sh wheels | ./ice.sh wheels-test" \
+      "| ./ice.sh web [--port N]" \
       "| ./ice.sh vtk-sdk PREFIX | ./ice.sh lane trixie|sid [ctest options]" >&2
     exit 2
     ;;
