@@ -153,41 +153,47 @@ if [ "$stage_status" -ne 0 ]; then
   made[$root]=no
   made[$paraview_root]=no
 fi
-if [[ $stages == *" vtk "* ]]; then
-  make_root "$root" "${packages[@]}"
-  if [ "${made[$root]}" = yes ]; then
-    # Debian's versions without their revisions: "VTK 9.3.0, PyVista 0.44.1".
-    versions=$(inside "$root" 'dpkg-query -W -f "VTK \${Version}" libvtk9-dev; dpkg-query -W -f ", PyVista \${Version}" python3-pyvista' |
-      sed -E 's/[+~-][^ ,]*//g')
-    echo "== lane $suite: $versions"
-    stage_run "${versions%%,*} (./ice.sh test-vtk)" \
-      inside "$root" 'cd /src && ./ice.sh test-vtk "$@"' "$@"
-    echo "== lane $suite: PyVista (Debian's python3-pyvista) with the vtkice of $build_dir"
-    stage_run "${versions#*, } (test_pyvista.py)" \
-      inside "$root" 'cd /src && env -u DISPLAY PYTHONPATH=/src/$VTKICE_BUILD_DIR/lib/python3/dist-packages \
-      xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" python3 -m pytest -q -p no:cacheprovider \
-      Testing/Wheel/test_pyvista.py'
-  else
-    stage_skip "VTK and PyVista" "no chroot"
+# lane_ready WORD ROOT SKIPPED PACKAGE...: lane_go=yes when the stages WORD of VTKICE_LANE_STAGES
+# run, in ROOT made for them; else a row SKIPPED says why not. Called as a plain command (make_root
+# runs a stage).
+lane_ready() {
+  local word=$1 chroot_root=$2 skipped=$3
+  shift 3
+  lane_go=no
+  if [[ $stages != *" $word "* ]]; then
+    stage_skip "$skipped" VTKICE_LANE_STAGES
+    return 0
   fi
-else
-  stage_skip "VTK and PyVista" VTKICE_LANE_STAGES
+  make_root "$chroot_root" "$@"
+  if [ "${made[$chroot_root]}" = yes ]; then
+    lane_go=yes
+  else
+    stage_skip "$skipped" "no chroot"
+  fi
+}
+# Debian's versions without their revisions ("VTK 9.3.0, PyVista 0.44.1"): versions ROOT SCRIPT.
+versions() { inside "$1" "$2" | sed -E 's/[+~-][^ ,]*//g'; }
+
+lane_ready vtk "$root" "VTK and PyVista" "${packages[@]}"
+if [ "$lane_go" = yes ]; then
+  versions=$(versions "$root" 'dpkg-query -W -f "VTK \${Version}" libvtk9-dev; dpkg-query -W -f ", PyVista \${Version}" python3-pyvista')
+  echo "== lane $suite: $versions"
+  stage_run "${versions%%,*} (./ice.sh test-vtk)" \
+    inside "$root" 'cd /src && ./ice.sh test-vtk "$@"' "$@"
+  echo "== lane $suite: PyVista (Debian's python3-pyvista) with the vtkice of $build_dir"
+  stage_run "${versions#*, } (test_pyvista.py)" \
+    inside "$root" 'cd /src && env -u DISPLAY PYTHONPATH=/src/$VTKICE_BUILD_DIR/lib/python3/dist-packages \
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" python3 -m pytest -q -p no:cacheprovider \
+    Testing/Wheel/test_pyvista.py'
 fi
 
-if [[ $stages == *" paraview "* ]]; then
-  # sid's one chroot is made and mounted once, for both stages.
-  make_root "$paraview_root" "${paraview_packages[@]}"
-  if [ "${made[$paraview_root]}" = yes ]; then
-    version=$(inside "$paraview_root" 'dpkg-query -W -f "ParaView \${Version}" paraview-dev' |
-      sed -E 's/[+~-][^ ,]*//g')
-    echo "== lane $suite: the ParaView stage in $build_dir-paraview, $version"
-    stage_run "$version (./ice.sh paraview)" \
-      inside "$paraview_root" 'cd /src && VTKICE_PARAVIEW_BUILD_DIR=$VTKICE_BUILD_DIR-paraview \
-      ./ice.sh paraview "$@"' "$@"
-  else
-    stage_skip "ParaView" "no chroot"
-  fi
-else
-  stage_skip "ParaView" VTKICE_LANE_STAGES
+# sid's one chroot is made and mounted once, for both stages.
+lane_ready paraview "$paraview_root" ParaView "${paraview_packages[@]}"
+if [ "$lane_go" = yes ]; then
+  version=$(versions "$paraview_root" 'dpkg-query -W -f "ParaView \${Version}" paraview-dev')
+  echo "== lane $suite: the ParaView stage in $build_dir-paraview, $version"
+  stage_run "$version (./ice.sh paraview)" \
+    inside "$paraview_root" 'cd /src && VTKICE_PARAVIEW_BUILD_DIR=$VTKICE_BUILD_DIR-paraview \
+    ./ice.sh paraview "$@"' "$@"
 fi
 stage_table

@@ -66,7 +66,7 @@ for wheel in "${wheels[@]}"; do
   tag=$(basename "$wheel" | cut -d- -f3)
   v=${tag#cp3}
   v=3.$v
-  python=$(ls -d "${PYENV_ROOT:-$HOME/.pyenv}"/versions/$v.*/bin/python$v 2>/dev/null | tail -1 ||
+  python=$(ls -d "${PYENV_ROOT:-${HOME:-/root}/.pyenv}"/versions/$v.*/bin/python$v 2>/dev/null | tail -1 ||
     true)
   [ -n "$python" ] || python=$(command -v "python$v" || true)
   if [ -z "$python" ]; then

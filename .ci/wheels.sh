@@ -33,7 +33,7 @@ if [ -n "${VTKICE_WHEEL_PYTHONS:-}" ]; then
   read -r -a pythons <<<"$VTKICE_WHEEL_PYTHONS"
 else
   for v in 3.10 3.11 3.12 3.13; do
-    found=$(ls -d "${PYENV_ROOT:-$HOME/.pyenv}"/versions/$v.*/bin/python$v 2>/dev/null | tail -1 ||
+    found=$(ls -d "${PYENV_ROOT:-${HOME:-/root}/.pyenv}"/versions/$v.*/bin/python$v 2>/dev/null | tail -1 ||
       true)
     [ -n "$found" ] || found=$(command -v "/usr/bin/python$v" || true)
     if [ -z "$found" ]; then
