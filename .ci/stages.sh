@@ -21,14 +21,22 @@ fi
 export VTKICE_STAGE_DEPTH=${VTKICE_STAGE_DEPTH:-0}
 stage_failed=0
 
-# Tests a stage's output says it ran: ctest's summary lines and pytest's closing lines.
+# Tests a stage's output says it ran: ctest's summary lines and pytest's closing lines. In bash:
+# sid's mawk (1.3.4 20260302) reads NF as 0 in a rule after one that names $NF.
 stage_count_tests() {
-  awk '
-    / tests failed out of [0-9]+/ { n += $NF; found = 1 }
-    /^=* *[0-9]+ (passed|failed)/ && (/ in [0-9.]+s/ || /^[0-9]+ passed, [0-9]+ failed$/) {
-      for (i = 1; i < NF; i++) if ($(i + 1) ~ /^(passed|failed|errors?),?$/) { n += $i; found = 1 }
-    }
-    END { if (found) print n; else print "-" }' "$1"
+  local line rest n=0 found=
+  while IFS= read -r line; do
+    if [[ $line =~ tests\ failed\ out\ of\ ([0-9]+) ]]; then
+      n=$((n + BASH_REMATCH[1])) found=1
+    elif [[ $line =~ ^=*\ *[0-9]+\ (passed|failed) ]] &&
+      [[ $line =~ \ in\ [0-9.]+s || $line =~ ^[0-9]+\ passed,\ [0-9]+\ failed$ ]]; then
+      rest=$line
+      while [[ $rest =~ ([0-9]+)\ (passed|failed|errors?)(.*) ]]; do
+        n=$((n + BASH_REMATCH[1])) found=1 rest=${BASH_REMATCH[3]}
+      done
+    fi
+  done <<<"$(grep -E 'tests failed out of|^=* *[0-9]+ (passed|failed)' "$1")"
+  if [ -n "$found" ]; then echo "$n"; else echo -; fi
 }
 
 # stage_row LINE DEPTH NAME RESULT TESTS SECONDS: writes the row, at line LINE when it exists.
