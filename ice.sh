@@ -46,6 +46,14 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 build_dir=${VTKICE_BUILD_DIR:-build}
+# ccache (installed with the build's packages) serves the compiles a build made before: another
+# clone's, the next CI run's, each lane's in its chroot. CMake reads the launchers from the
+# environment when it configures a new build folder. VTKICE_CCACHE=0: none.
+if [ "${VTKICE_CCACHE:-1}" != 0 ] && command -v ccache >/dev/null; then
+  export CMAKE_C_COMPILER_LAUNCHER=${CMAKE_C_COMPILER_LAUNCHER:-ccache}
+  export CMAKE_CXX_COMPILER_LAUNCHER=${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}
+  export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
+fi
 # Tests run in parallel, one per core (on 2 cores the VTK stage's Xvfb pass took 5.1 min instead of
 # 7.8); those that measure time or memory are marked RUN_SERIAL and run alone.
 test_jobs=${VTKICE_TEST_JOBS:-$(nproc)}

@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian packages VTK Ice needs to build, test and render headless
 # (Xvfb for the X tests; Mesa EGL and OSMesa for rendering without X), to make and check its
-# Debian package (dpkg-dev, lintian) and the turntable's video (ffmpeg).
+# Debian package (dpkg-dev, lintian), the turntable's video (ffmpeg) and ccache (./ice.sh's builds).
 # Skips apt-get entirely when every package is already installed.
 #   .ci/install-deps.sh            Debian's VTK 9.1 and everything the main build and tests use
 #   .ci/install-deps.sh paraview   Debian's ParaView 5.11 (with its own VTK 9.2) for the plugin
@@ -18,13 +18,13 @@ if [ "${1:-}" = paraview ]; then
   # The GUI test's screenshot uses xwd (x11-apps) and ImageMagick; the MPI test mpiexec. ParaView's recommended
   # packages (Qt's platform and image plugins among them) are what the GUI was tested with.
   packages=(
-    paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config
+    paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config ccache
     libglm-dev libopenimageio-dev xvfb xauth libgl1-mesa-dri x11-apps imagemagick openmpi-bin
   )
   recommends=yes
 else
   packages=(
-    libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config
+    libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config ccache
     libglm-dev libopenimageio-dev
     xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
     dpkg-dev lintian ffmpeg

@@ -40,14 +40,14 @@ stages=" ${VTKICE_LANE_STAGES:-vtk paraview} "
 # The VTK stage's packages (.ci/install-deps.sh, which runs inside too and finds them), PyVista
 # and pytest for its test, and what the tests' scripts call.
 packages=(
-  libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config libglm-dev libopenimageio-dev
+  libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config ccache libglm-dev libopenimageio-dev
   xvfb xauth x11-utils libgl1-mesa-dri libegl-dev libegl-mesa0 dpkg-dev lintian ffmpeg
   python3-pyvista python3-pytest procps file
 )
 # The ParaView stage's packages (install-deps.sh's paraview list), and the development packages
 # ParaView's CMake package looks for that paraview-dev does not depend on (Debian 13 and sid).
 paraview_packages=(
-  paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config
+  paraview paraview-dev python3-paraview python3-dev cmake ninja-build g++ pkg-config ccache
   libglm-dev libopenimageio-dev xvfb xauth libgl1-mesa-dri x11-apps imagemagick openmpi-bin
   mpi-default-dev libx11-dev libutfcpp-dev libdouble-conversion-dev libglew-dev libgl-dev
   libegl-dev libxt-dev libfreetype-dev libhdf5-mpi-dev procps file

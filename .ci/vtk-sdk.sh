@@ -7,6 +7,8 @@
 # point at the wheel's libraries (PREFIX/vtkmodules and PREFIX/build/... link to its vtkmodules/).
 #   VTKICE_PYTHON      the Python whose vtk wheel the SDK is for (default: python3)
 #   VTKICE_VTK_SOURCE  VTK's source of the wheel's release: a .tar.xz/.tar.gz archive or a folder
+#   VTKICE_SDK_WORK    a folder kept for the next SDK (the source unpacked, VTK's configured
+#                      build): another Python's SDK is then a configure and an install
 # Then: CMAKE_PREFIX_PATH=PREFIX pip install .   (with that Python's pip)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -41,16 +43,28 @@ if ! ls "$modules_dir"/libvtkCommonCore*.so >/dev/null 2>&1; then
 fi
 prefix=$(realpath -m "$prefix")
 mkdir -p "$(dirname "$prefix")"
-work=$(mktemp -d "$prefix.work.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+if [ -n "${VTKICE_SDK_WORK:-}" ]; then
+  work=$(realpath -m "$VTKICE_SDK_WORK")
+  mkdir -p "$work"
+else
+  work=$(mktemp -d "$prefix.work.XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
 echo "vtk-sdk: VTK $version for $modules_dir, from $source, into $prefix"
 
 # 1. The source, checked to be the wheel's release.
 if [ -d "$source" ]; then
   src=$(cd "$source" && pwd)
 else
-  tar -xf "$source" -C "$work"
-  src=$(find "$work" -mindepth 1 -maxdepth 1 -type d | head -n 1)
+  # Unpacked once per archive (its path, size and time) in a kept work folder.
+  stamp="$(realpath "$source") $(stat -c '%s %Y' "$source")"
+  if [ "$(cat "$work/source.stamp" 2>/dev/null)" != "$stamp" ]; then
+    rm -rf "$work/source" "$work/build" "$work/source.stamp"
+    mkdir -p "$work/source"
+    tar -xf "$source" -C "$work/source"
+    echo "$stamp" >"$work/source.stamp"
+  fi
+  src=$(find "$work/source" -mindepth 1 -maxdepth 1 -type d | head -n 1)
 fi
 src_version=$(sed -nE 's/^set\(VTK_(MAJOR|MINOR|BUILD)_VERSION ([0-9]+)\)$/\2/p' "$src/CMake/vtkVersion.cmake" | paste -sd.)
 if [ "$src_version" != "$version" ]; then
@@ -66,6 +80,9 @@ for module in $modules; do options+=("-DVTK_MODULE_ENABLE_VTK_$module=YES"); don
 for group in Imaging MPI Qt Rendering StandAlone Views Web; do
   options+=("-DVTK_GROUP_ENABLE_$group=DONT_WANT")
 done
+# A kept build is configured afresh (another Python's FindPython results); ninja then redoes only
+# what changed.
+rm -f "$work/build/CMakeCache.txt"
 cmake -G Ninja -S "$src" -B "$work/build" -DCMAKE_BUILD_TYPE=Release \
   -DVTK_WHEEL_BUILD=ON -DVTK_INSTALL_SDK=ON -DVTK_WRAP_PYTHON=ON -DVTK_WRAP_SERIALIZATION=ON \
   -DVTK_DEBUG_LEAKS=OFF -DVTK_DISPATCH_SOA_ARRAYS=ON -DVTK_SMP_IMPLEMENTATION_TYPE=Sequential \
@@ -88,9 +105,11 @@ ninja "${targets[@]}" >"$work/tools.log" 2>&1 || {
   tail -n 30 "$work/tools.log" >&2
   exit 1
 }
-# The generated public headers (shader sources, ...): each one `cmake -P` step, run alone.
+# The generated public headers (shader sources, ...): each one `cmake -P` step, run alone. Made
+# from the source only: those a kept work folder has stay.
 ninja -t targets all | sed -nE 's/^([^/][^:]*\.(h|hxx|txx)): CUSTOM_COMMAND$/\1/p' |
   while read -r header; do
+    [ ! -s "$header" ] || continue
     command=$(ninja -t commands -s "$header")
     case "$command" in
       *"cmake "*"-P "*) bash -c "$command" ;;

@@ -33,7 +33,9 @@ if [ ! -f "$sdk/lib/cmake/vtk/vtk-config.cmake" ] ||
   stage "SDK $sdk"
   . .ci/vtk-source.sh
   vtkice_vtk_source "$vtk_version"
-  VTKICE_PYTHON=$python bash .ci/vtk-sdk.sh "$sdk"
+  # The work folder ./ice.sh wheels keeps too: the SDKs share the unpacked source and VTK's build.
+  VTKICE_SDK_WORK=${VTKICE_SDK_WORK:-build-wheels/sdk-work} VTKICE_PYTHON=$python \
+    bash .ci/vtk-sdk.sh "$sdk"
 fi
 sdk=$(cd "$sdk" && pwd)
 

@@ -10,7 +10,7 @@
 #      without an X server, on the wheel's libraries (the Python tests: in 5)
 #   5. pytest Testing/Wheel: the installed package, the project's Python tests on it, PyVista,
 #      the web viewer in Debian's headless Chromium and the Jupyter notebook (nbclient)
-#   6. pip wheel ., installed into a second fresh venv, imported there
+# The wheels users install are made and tried in fresh venvs by ./ice.sh wheels and wheels-test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 top=$PWD
@@ -45,19 +45,4 @@ env -u DISPLAY VTKICE_BACKEND=egl ctest --test-dir "$root/build" --output-on-fai
 stage "pytest Testing/Wheel (the installed vtkice, PyVista)"
 env -u DISPLAY "$venv/bin/python" -m pytest -q -p no:cacheprovider Testing/Wheel || status=1
 
-stage "pip wheel . into a second fresh venv"
-rm -rf "$root/dist" "$root/venv-fresh"
-CMAKE_PREFIX_PATH=$sdk "$venv/bin/pip" wheel --quiet --disable-pip-version-check \
-  --no-build-isolation --no-deps -w "$root/dist" "$top"
-/usr/bin/python3 -m venv "$root/venv-fresh"
-"$root/venv-fresh/bin/pip" install --quiet --disable-pip-version-check "vtk==$vtk_version" \
-  "$root"/dist/vtkice-*.whl
-(cd /tmp && env -u DISPLAY "$top/$root/venv-fresh/bin/python" -c "
-import vtkmodules.vtkRenderingOpenGL2, vtkice
-print('fresh venv: vtkice', vtkice.__file__, 'imports beside vtk', vtkice._BUILT_AGAINST)
-m = vtkice.vtkIceMapper()
-assert m.IsA('vtkOpenGLPolyDataMapper')
-from importlib.metadata import distribution
-assert any(f.name == 'LICENSE' for f in distribution('vtkice').files), 'the wheel carries no LICENSE'
-") || status=1
 exit "$status"

@@ -73,12 +73,13 @@ mkdir -p "$root/proc" "$root/dev"
 mountpoint -q "$root/proc" || mount -t proc proc "$root/proc"
 mountpoint -q "$root/dev" || mount --bind /dev "$root/dev"
 
-mkdir -p "$work/toolchain" "$work/ccache"
+# ccache's files in the chroot, kept with it: later clones' builds find them (CCACHE_BASEDIR).
+mkdir -p "$work/toolchain" "$root/var/cache/vtkice-ccache"
 for tool in gcc:gcc g++:g++; do
   cat >"$work/toolchain/${tool%%:*}" <<EOF
 #!/bin/sh
 # The chroot's ${tool#*:}, in the folder the build runs it from.
-exec chroot "$root" /usr/bin/env -i PATH=/usr/bin:/bin CCACHE_DIR="$work/ccache" \\
+exec chroot "$root" /usr/bin/env -i PATH=/usr/bin:/bin CCACHE_DIR=/var/cache/vtkice-ccache \\
   CCACHE_BASEDIR="$top" /bin/sh -c 'cd "\$0" && exec ccache ${tool#*:} "\$@"' "\$PWD" "\$@"
 EOF
   chmod +x "$work/toolchain/${tool%%:*}"
@@ -110,7 +111,9 @@ assert vtkVersion.GetVTKVersion() == '$vtk_version'" 2>/dev/null; then
   if [ ! -f "$sdk/lib/cmake/vtk/vtk-config.cmake" ] ||
     [ "$(readlink -f "$sdk/vtkmodules")" != "$(readlink -f "$("$venv/bin/python" -c 'import os, vtkmodules; print(os.path.dirname(vtkmodules.__file__))')")" ]; then
     say "Python $v: the SDK $sdk"
-    VTKICE_PYTHON=$venv/bin/python bash .ci/vtk-sdk.sh "$sdk"
+    # One kept work folder: after the first, each SDK is a configure and an install.
+    VTKICE_SDK_WORK=${VTKICE_SDK_WORK:-$work/sdk-work} VTKICE_PYTHON=$venv/bin/python \
+      bash .ci/vtk-sdk.sh "$sdk"
   fi
   say "Python $v: pip wheel . (Debian 11's g++ in $root)"
   start=$SECONDS
@@ -118,7 +121,9 @@ assert vtkVersion.GetVTKVersion() == '$vtk_version'" 2>/dev/null; then
   # the same and ccache serves them after the first.
   ln -sfn "sdk-$v" "$work/sdk"
   rm -rf "$work/pip"
-  CC=$work/toolchain/gcc CXX=$work/toolchain/g++ CMAKE_PREFIX_PATH=$work/sdk \
+  # The toolchain runs the chroot's ccache itself: no launcher around it.
+  env -u CMAKE_C_COMPILER_LAUNCHER -u CMAKE_CXX_COMPILER_LAUNCHER \
+    CC=$work/toolchain/gcc CXX=$work/toolchain/g++ CMAKE_PREFIX_PATH=$work/sdk \
     "$venv/bin/pip" wheel --quiet --disable-pip-version-check --no-build-isolation --no-deps \
     -w "$work/raw" --config-settings="build-dir=$work/pip" \
     --config-settings=cmake.define.VTKICE_IMAGE_READERS=VTK "$top"

@@ -8,11 +8,13 @@ usage: ready_wheel.py WORK_DIR [BASELINE.png]
   - the environment is read from a Radiance HDR panorama file, sky above ground, with VTK's
     readers (the wheel has no OpenImageIO): the cube map's +Y face is the sky, -Y the ground;
   - an OpenEXR file is refused with one error naming the format;
+  - the installed distribution carries the licence (LICENSE);
   - a PyVista scene of an ice sphere in that environment, rendered through EGL, against
     BASELINE (compare_images.py's check, its alternatives BASELINE_1.png... too).
 Prints one line per check; exits 1 when one fails."""
 import os
 import sys
+from importlib.metadata import distribution
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [here, os.path.join(here, "..", "Scripts")]
@@ -81,6 +83,10 @@ def main(work, baseline=None):
     message = " ".join(exr_errors)
     check("an OpenEXR file is refused naming its format",
           len(exr_errors) == 1 and refused.GetErrorCode() != 0 and "OpenEXR" in message, message)
+
+    files = distribution("vtkice").files or []
+    check("the wheel carries its licence", any(f.name == "LICENSE" for f in files),
+          "no LICENSE among %d files" % len(files))
 
     texture = vtkTexture()
     reader.ConfigureTexture(texture)
