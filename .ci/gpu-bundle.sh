@@ -16,11 +16,11 @@ grep -qx '/.gpu/' .git/info/exclude 2>/dev/null || echo /.gpu/ >> .git/info/excl
 rm -rf .gpu/b && mkdir -p .gpu/b/bin .gpu/b/lib .gpu/b/libstdcxx .gpu/stub
 cp "$build"/bin/ice-render "$build"/bin/ice-bench "$build"/bin/IceCxxTests .gpu/b/bin/
 cp -a "$build"/lib/libRenderingIce.so* "$build"/lib/libFiltersIce.so* "$build"/lib/libIOIce.so* \
-  "$build"/lib/libIceHeadless.so* .gpu/b/lib/
+  "$build"/lib/libLookIce.so* "$build"/lib/libIceHeadless.so* .gpu/b/lib/
 
 # The stub: every OpenImageIO function the project calls, aborting with a message.
 programs=(.gpu/b/bin/* "$build"/lib/libRenderingIce.so.0.1.0 "$build"/lib/libFiltersIce.so.0.1.0
-  "$build"/lib/libIOIce.so.0.1.0)
+  "$build"/lib/libIOIce.so.0.1.0 "$build"/lib/libLookIce.so.0.1.0)
 {
   echo '.section .note.GNU-stack,"",@progbits'
   echo '.text'
@@ -36,7 +36,7 @@ done
 
 # The libraries the programs load, but glibc, OpenGL and OpenImageIO (stubbed).
 for f in "${programs[@]}"; do objdump -p "$f" | awk '/NEEDED/ {print $2}'; done | sort -u |
-  grep -v -E 'OpenImageIO|libRenderingIce|libFiltersIce|libIOIce|libIceHeadless' | while read -r name; do
+  grep -v -E 'OpenImageIO|libRenderingIce|libFiltersIce|libIOIce|libLookIce|libIceHeadless' | while read -r name; do
     path=$(ldconfig -p | awk -v n="$name" '$1 == n && !found {print $NF; found = 1}')
     [ -n "$path" ] && { echo "$path"; ldd "$path" | awk '/=>/ {print $3}'; }
   done | sort -u |

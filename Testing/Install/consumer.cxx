@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIceEnvironmentReader.h"
+#include "vtkIceLookTable.h"
 #include "vtkIceMapper.h"
 #include "vtkIceTeapotSource.h"
 #include "vtkNew.h"
@@ -17,6 +18,7 @@ int main()
   vtkNew<vtkIceEnvironmentReader> reader;
   std::cout << mapper->GetClassName() << " eta " << mapper->GetRefractionRatio() << ", teapot "
             << teapot->GetOutput()->GetNumberOfPolys() << " triangles, " << reader->GetClassName()
-            << " layout " << reader->GetLayoutAsString() << "\n";
-  return teapot->GetOutput()->GetNumberOfPolys() > 0 ? 0 : 1;
+            << " layout " << reader->GetLayoutAsString() << ", the look's setting eta "
+            << (IceLook::Find("eta") ? "found" : "missing") << "\n";
+  return teapot->GetOutput()->GetNumberOfPolys() > 0 && IceLook::Find("eta") ? 0 : 1;
 }

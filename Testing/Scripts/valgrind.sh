@@ -54,7 +54,7 @@ echo "valgrind: $(($(date +%s) - start)) s; log $log"
 import re
 import sys
 
-ours = re.compile(r"libRenderingIce|libFiltersIce|libIOIce|libIceHeadless|IceCxxTests")
+ours = re.compile(r"libRenderingIce|libFiltersIce|libIOIce|libLookIce|libIceHeadless|IceCxxTests")
 driver = re.compile(r"swrast_dri|libLLVM|libGLX_mesa|libEGL_mesa|libOSMesa|libgallium")
 system = re.compile(r"vgpreload|libc\.so|ld-linux|libstdc\+\+|\(dl-|strcmp|rtld")
 records = []

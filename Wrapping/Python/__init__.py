@@ -22,6 +22,7 @@ if _vtkVersion.GetVTKVersion() != _BUILT_AGAINST:
 from .FiltersIce import *  # noqa: F401,F403,E402
 from .RenderingIce import *  # noqa: F401,F403,E402
 from .IOIce import *  # noqa: F401,F403,E402
+from .LookIce import *  # noqa: F401,F403,E402
 
 
 def use_backend(name="auto"):

@@ -21,7 +21,7 @@
 #ifndef vtkIceLook_h
 #define vtkIceLook_h
 
-#include "RenderingIceModule.h" // For export macro
+#include "LookIceModule.h" // For export macro
 #include "vtkObject.h"
 
 #include <string> // For std::string
@@ -31,7 +31,7 @@ class vtkIceCubeMapPass;
 class vtkIceMapper;
 class vtkIcePass;
 
-class RENDERINGICE_EXPORT vtkIceLook : public vtkObject
+class LOOKICE_EXPORT vtkIceLook : public vtkObject
 {
 public:
   static vtkIceLook* New();

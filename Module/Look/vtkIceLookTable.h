@@ -8,7 +8,7 @@
 #ifndef vtkIceLookTable_h
 #define vtkIceLookTable_h
 
-#include "RenderingIceModule.h" // For export macro
+#include "LookIceModule.h" // For export macro
 
 #include <string>
 #include <utility>
@@ -51,48 +51,48 @@ struct Setting
 };
 
 // Every setting, in the order --help and --print-preset list them.
-RENDERINGICE_EXPORT const std::vector<Setting>& Settings();
-RENDERINGICE_EXPORT const Setting* Find(const std::string& name);
+LOOKICE_EXPORT const std::vector<Setting>& Settings();
+LOOKICE_EXPORT const Setting* Find(const std::string& name);
 
 // The names a Choice accepts, in the order of the library's enum.
-RENDERINGICE_EXPORT const std::vector<std::string>& Choices(const std::string& name);
+LOOKICE_EXPORT const std::vector<std::string>& Choices(const std::string& name);
 
 // The library's range of a Number or Integer setting ("[0, 1]"), empty for others.
-RENDERINGICE_EXPORT std::string Range(const std::string& name);
+LOOKICE_EXPORT std::string Range(const std::string& name);
 
 // The library's range of a Number or Integer setting as numbers; false for others.
-RENDERINGICE_EXPORT bool Bounds(const std::string& name, double& low, double& high);
+LOOKICE_EXPORT bool Bounds(const std::string& name, double& low, double& high);
 
 // The value of `name` in ice-render's scene when nothing sets it: the library's defaults, the
 // dynamic cube map on. Empty for the camera settings (the scene places the camera to frame the
 // model).
-RENDERINGICE_EXPORT std::string Default(const std::string& name);
+LOOKICE_EXPORT std::string Default(const std::string& name);
 
 // Sets `name` to `value` on `target`. Returns an empty string, or why the value is refused (with
 // the library's range or the accepted names): values out of range are refused, not clamped.
-RENDERINGICE_EXPORT std::string Apply(
+LOOKICE_EXPORT std::string Apply(
   const Target& target, const std::string& name, const std::string& value);
 
 // The current value of `name` on `target`, as Apply reads it.
-RENDERINGICE_EXPORT std::string Value(const Target& target, const std::string& name);
+LOOKICE_EXPORT std::string Value(const Target& target, const std::string& name);
 
 // A list of assignments: a preset's, then the command line's, applied in order.
 using Assignments = std::vector<std::pair<std::string, std::string>>;
 
 // Reads a preset file: "NAME = VALUE" lines, '#' starts a comment. Returns an empty string or
 // the first problem (with the file's line number); nothing is applied here.
-RENDERINGICE_EXPORT std::string ReadPreset(const std::string& path, Assignments& assignments);
+LOOKICE_EXPORT std::string ReadPreset(const std::string& path, Assignments& assignments);
 
 // The effective settings of `target` as a preset: every look setting, and of the camera settings
 // those named in `cameraGiven` (the camera is the scene's otherwise).
-RENDERINGICE_EXPORT std::string WritePreset(
+LOOKICE_EXPORT std::string WritePreset(
   const Target& target, const std::vector<std::string>& cameraGiven);
 
 // Applies `assignments` in order, stopping at the first refused one (returned).
-RENDERINGICE_EXPORT std::string ApplyAll(const Target& target, const Assignments& assignments);
+LOOKICE_EXPORT std::string ApplyAll(const Target& target, const Assignments& assignments);
 
 // Checks `assignments` against a scratch mapper and cube-map pass (before any scene exists).
-RENDERINGICE_EXPORT std::string Check(const Assignments& assignments);
+LOOKICE_EXPORT std::string Check(const Assignments& assignments);
 }
 
 #endif // vtkIceLookTable_h
