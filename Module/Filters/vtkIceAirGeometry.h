@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceAirGeometry
- * @brief   The air-bubble planes inside an ice surface (private to the module).
+ * @brief   The air-bubble planes inside an ice surface (for the project's modules: not installed).
  *
  * Input: the ice surface. Output: NumberOfPlanes squares at random orientations in the middle of
  * the input's bounds (half-sizes 0.2 to 0.4 of its largest extent, placement picked by Seed),
@@ -13,11 +13,12 @@
 #ifndef vtkIceAirGeometry_h
 #define vtkIceAirGeometry_h
 
+#include "FiltersIceModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
 class vtkTransform;
 
-class vtkIceAirGeometry : public vtkPolyDataAlgorithm
+class FILTERSICE_EXPORT vtkIceAirGeometry : public vtkPolyDataAlgorithm
 {
 public:
   static vtkIceAirGeometry* New();

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceCrackGeometry
- * @brief   The crack surfaces inside an ice surface (private to the module).
+ * @brief   The crack surfaces inside an ice surface (for the project's modules: not installed).
  *
  * Input: the ice surface. Output: NumberOfCracks instances of three generic crack models
  * (vtkIceCrackSource, models picked by Seed), randomly rotated, near the centre of the input's
@@ -13,11 +13,12 @@
 #ifndef vtkIceCrackGeometry_h
 #define vtkIceCrackGeometry_h
 
+#include "FiltersIceModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
 class vtkTransform;
 
-class vtkIceCrackGeometry : public vtkPolyDataAlgorithm
+class FILTERSICE_EXPORT vtkIceCrackGeometry : public vtkPolyDataAlgorithm
 {
 public:
   static vtkIceCrackGeometry* New();
