@@ -10,11 +10,14 @@
 #include "vtkIceInteriorDrawer.h"
 #include "vtkIceMapperAccess.h"
 #include "vtkIceRenderPasses.h"
-#include "vtkIceRendererSteps.h"
+#include "vtkIceOpaqueStep.h"
+#include "vtkIceOverlayStep.h"
 #include "vtkIceScreenInterior.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceStepTimers.h"
+#include "vtkIceTranslucentStep.h"
+#include "vtkIceVolumeStep.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -45,27 +48,6 @@ vtkStandardNewMacro(vtkIcePass);
 vtkCxxSetObjectMacro(vtkIcePass, DelegatePass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkIcePass, CubeMapPass, vtkIceCubeMapPass);
 
-// The step of the default delegate that draws the ice's air and cracks right after the opaque
-// geometry, so translucent geometry in front of the ice is composited over them.
-class vtkIceOverlayStep : public vtkRenderPass
-{
-public:
-  static vtkIceOverlayStep* New();
-  vtkTypeMacro(vtkIceOverlayStep, vtkRenderPass);
-  void Render(const vtkRenderState* s) override
-  {
-    this->NumberOfRenderedProps = 0;
-    if (this->Draw && this->IceState)
-    {
-      this->Draw(s, this->IceState);
-    }
-  }
-  // The owner's RenderOverlays; the ice props while the frame renders.
-  std::function<void(const vtkRenderState*, const vtkRenderState*)> Draw;
-  const vtkRenderState* IceState = nullptr;
-};
-vtkStandardNewMacro(vtkIceOverlayStep);
-
 namespace
 {
 // The renderer's pick list during vtkRenderer::PickPropFrom (vtkViewport::PickFromProps, which
@@ -88,8 +70,9 @@ vtkIcePass::vtkIcePass()
   : Frame(vtkIceFrame::New())
   , ScreenInterior(new vtkIceScreenInterior)
 {
-  // The steps of the renderer's own rendering, with its settings (vtkIceRendererSteps.h), and
-  // the ice's air and cracks right after the opaque geometry.
+  // The steps of the renderer's own rendering, with its settings (vtkIceOpaqueStep,
+  // vtkIceTranslucentStep, vtkIceVolumeStep), and the ice's air and cracks right after the opaque
+  // geometry (vtkIceOverlayStep).
   this->OpaqueStep = vtkIceOpaqueStep::New();
   this->TranslucentStep = vtkIceTranslucentStep::New();
   this->VolumeStep = vtkIceVolumeStep::New();

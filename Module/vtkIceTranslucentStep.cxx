@@ -1,19 +1,16 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkIceRendererSteps.h"
+#include "vtkIceTranslucentStep.h"
 
 #include "vtkDualDepthPeelingPass.h"
-#include "vtkHiddenLineRemovalPass.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpaquePass.h"
 #include "vtkOpenGLFXAAFilter.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOrderIndependentTranslucentPass.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
-#include "vtkSSAOPass.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVolumetricPass.h"
 
@@ -57,60 +54,7 @@ bool HasTranslucentPolygonalGeometry(const vtkRenderState* s)
 }
 }
 
-vtkStandardNewMacro(vtkIceOpaqueStep);
 vtkStandardNewMacro(vtkIceTranslucentStep);
-vtkStandardNewMacro(vtkIceVolumeStep);
-
-//------------------------------------------------------------------------------
-vtkIceOpaqueStep::vtkIceOpaqueStep()
-  : Opaque(vtkSmartPointer<vtkOpaquePass>::New())
-{
-}
-
-vtkIceOpaqueStep::~vtkIceOpaqueStep() = default;
-
-void vtkIceOpaqueStep::Render(const vtkRenderState* s)
-{
-  vtkRenderer* renderer = s->GetRenderer();
-  vtkRenderPass* pass = this->Opaque;
-  if (renderer->GetUseHiddenLineRemoval() &&
-    vtkHiddenLineRemovalPass::WireframePropsExist(s->GetPropArray(), s->GetPropArrayCount()))
-  {
-    if (!this->HiddenLineRemoval)
-    {
-      this->HiddenLineRemoval = vtkSmartPointer<vtkHiddenLineRemovalPass>::New();
-    }
-    pass = this->HiddenLineRemoval;
-  }
-  else if (renderer->GetUseSSAO())
-  {
-    if (!this->AmbientOcclusion)
-    {
-      this->AmbientOcclusion = vtkSmartPointer<vtkSSAOPass>::New();
-      this->AmbientOcclusion->SetDelegatePass(this->Opaque);
-    }
-    this->AmbientOcclusion->SetRadius(renderer->GetSSAORadius());
-    this->AmbientOcclusion->SetBias(renderer->GetSSAOBias());
-    this->AmbientOcclusion->SetKernelSize(renderer->GetSSAOKernelSize());
-    this->AmbientOcclusion->SetBlur(renderer->GetSSAOBlur());
-    pass = this->AmbientOcclusion;
-  }
-  pass->Render(s);
-  this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
-}
-
-void vtkIceOpaqueStep::ReleaseGraphicsResources(vtkWindow* w)
-{
-  for (vtkRenderPass* pass : { static_cast<vtkRenderPass*>(this->Opaque),
-         static_cast<vtkRenderPass*>(this->HiddenLineRemoval),
-         static_cast<vtkRenderPass*>(this->AmbientOcclusion) })
-  {
-    if (pass)
-    {
-      pass->ReleaseGraphicsResources(w);
-    }
-  }
-}
 
 //------------------------------------------------------------------------------
 vtkIceTranslucentStep::vtkIceTranslucentStep()
@@ -176,28 +120,4 @@ void vtkIceTranslucentStep::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->FXAA->ReleaseGraphicsResources();
   }
-}
-
-//------------------------------------------------------------------------------
-vtkIceVolumeStep::vtkIceVolumeStep()
-  : Volumes(vtkSmartPointer<vtkVolumetricPass>::New())
-{
-}
-
-vtkIceVolumeStep::~vtkIceVolumeStep() = default;
-
-void vtkIceVolumeStep::Render(const vtkRenderState* s)
-{
-  this->NumberOfRenderedProps = 0;
-  if (this->Translucent && this->Translucent->DrewVolumes)
-  {
-    return;
-  }
-  this->Volumes->Render(s);
-  this->NumberOfRenderedProps = this->Volumes->GetNumberOfRenderedProps();
-}
-
-void vtkIceVolumeStep::ReleaseGraphicsResources(vtkWindow* w)
-{
-  this->Volumes->ReleaseGraphicsResources(w);
 }
