@@ -27,7 +27,7 @@ public:
   vtkGetVector3Macro(Eye, double);
 
   // The indices of `centers` (x, y, z each) farthest from `eye` first; ties keep their order.
-  // The filter orders its polygons by their centroids so; the single-pass interior its planes.
+  // The filter orders its polygons by their centroids so; the screen-space interior its planes.
   static std::vector<vtkIdType> Order(const std::vector<double>& centers, const double eye[3]);
 
 protected:

@@ -101,9 +101,6 @@ int vtkIceFrame::InputsOf(vtkProp* prop, int needs, bool exitPoint, bool depthDe
       inputs |= exitPoint ? ExitPointInput : TwoSidedInput;
     }
     inputs |= (needs & NeedsPathLength) ? PathLengthInput : 0;
-    // The single pass's interior; the screen-space one reads the back depth in its own step.
-    inputs |=
-      (needs & NeedsBackDepthForInterior) && !(needs & NeedsScreenInterior) ? InteriorInput : 0;
     inputs |= inputs ? BackNormalsInput : 0;
   }
   if (this->ScreenInterior && (needs & NeedsScreenInterior))
@@ -125,7 +122,6 @@ std::string vtkIceFrame::Defines(int inputs)
     { TwoSidedInput, "ICE_FRAME_TWO_SIDED" },
     { ExitPointInput, "ICE_FRAME_EXIT_POINT" },
     { PathLengthInput, "ICE_FRAME_PATH_LENGTH" },
-    { InteriorInput, "ICE_FRAME_INTERIOR" },
     { DepthDebugInput, "ICE_FRAME_DEPTH_DEBUG" },
     { ScreenInteriorInput, "ICE_FRAME_SCREEN_INTERIOR" },
   };

@@ -33,7 +33,7 @@ public:
     NeedsBackfaceNormals = 1,          // two-sided refraction (TwoSidedRefraction)
     NeedsDepthIntervalBeforeScene = 2, // depth debug views; cracks in the back-face normals
     NeedsDepthIntervalForInterior = 4, // its own interval, right before its cracks and air
-    NeedsBackDepthForInterior = 8,     // the back-face target's depth (InteriorSinglePass)
+    NeedsBackDepthForInterior = 8,     // the back-face target's depth (the screen-space interior)
     NeedsPathLength = 16,              // the back-face target's depth (absorption)
     NeedsScreenInterior = 32           // the screen-space interior step (InteriorScreenSpace)
   };
@@ -48,7 +48,6 @@ public:
     TwoSidedInput = 2,    // ICE_FRAME_TWO_SIDED: the blended refraction normal (eq 1)
     ExitPointInput = 4,   // ICE_FRAME_EXIT_POINT: refraction again at the exit point
     PathLengthInput = 8,  // ICE_FRAME_PATH_LENGTH: the path in the ice, for absorption
-    InteriorInput = 16,   // ICE_FRAME_INTERIOR: the single-pass interior, up to the back depth
     DepthDebugInput = 32, // ICE_FRAME_DEPTH_DEBUG: the depth interval shown (debug views)
     ScreenInteriorInput = 64 // ICE_FRAME_SCREEN_INTERIOR: the screen-space interior's result
   };

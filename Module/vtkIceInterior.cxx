@@ -102,8 +102,8 @@ vtkIceInterior::vtkIceInterior()
   this->AirTexture->EdgeClampOn();
   this->AirTexture->SetColorModeToDirectScalars();
   this->AirMapper->SetAirTexture(this->AirTexture);
-  // The single pass samples the same images in a loop: without anisotropic filtering, which
-  // makes llvmpipe a hundred times slower there (15 s a frame for 19 planes).
+  // The screen-space interior samples the same images in a loop: without anisotropic filtering,
+  // which makes llvmpipe a hundred times slower there (15 s a frame for 19 planes).
   this->AirAtlas->SetInputConnection(this->AirImages->GetOutputPort());
   this->AirAtlas->InterpolateOn();
   this->AirAtlas->MipmapOn();

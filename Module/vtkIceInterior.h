@@ -49,7 +49,7 @@ public:
   void DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* iceInput, const double bounds[6],
     int number, int seed, double milkiness, bool debug);
 
-  // The bubble images of air of `seed`, for the single-pass interior.
+  // The bubble images of air of `seed`, for the screen-space interior.
   vtkTexture* GetAirAtlas(int seed);
 
   // See vtkIceWorldSpaceMapper::ForgetRenderPasses.
@@ -64,7 +64,7 @@ private:
   vtkNew<vtkIceBackToFront> AirOrder;
   vtkNew<vtkIceAirTextureSource> AirImages;
   vtkNew<vtkTexture> AirTexture;
-  vtkNew<vtkTexture> AirAtlas; // for the single pass
+  vtkNew<vtkTexture> AirAtlas; // for the screen-space interior
   vtkNew<vtkIceAirMapper> AirMapper;
   vtkNew<vtkActor> AirActor;
 

@@ -4,9 +4,9 @@
 
 #include "vtkIceInterior.h"
 #include "vtkIceInteriorLook.h"
+#include "vtkIceInteriorTable.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePropertyUniforms.h"
-#include "vtkIceSinglePassInterior.h"
 
 #include "vtkPolyData.h"
 
@@ -20,7 +20,7 @@ void vtkIceInteriorDrawer::DrawCracks(
   const bool otherDebug = view == vtkIceMapper::DebugFrontDepth ||
     view == vtkIceMapper::DebugBackDepth || view == vtkIceMapper::DebugAir;
   if (otherDebug || (!overlay && (!mapper->CracksPerturbRefraction || debugCracks)) ||
-    (overlay && (mapper->UsesSinglePassInterior() || mapper->UsesScreenInterior())))
+    (overlay && mapper->UsesScreenInterior()))
   {
     return;
   }
@@ -48,7 +48,7 @@ void vtkIceInteriorDrawer::DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkAc
   const bool debugAir = view == vtkIceMapper::DebugAir;
   vtkIceProperty* look = mapper->GetIceProperty();
   if (look->GetNumberOfAirPlanes() == 0 || (view != vtkIceMapper::DebugOff && !debugAir) ||
-    mapper->UsesSinglePassInterior() || mapper->UsesScreenInterior())
+    mapper->UsesScreenInterior())
   {
     return;
   }
@@ -65,7 +65,7 @@ void vtkIceInteriorDrawer::DrawAir(vtkIceMapper* mapper, vtkRenderer* ren, vtkAc
 }
 
 //------------------------------------------------------------------------------
-const vtkIceSinglePassInterior* vtkIceInteriorDrawer::BeginScreenInterior(
+const vtkIceInteriorTable* vtkIceInteriorDrawer::BeginScreenInterior(
   vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program)
 {
   vtkPolyData* input = mapper->GetInput();
@@ -78,7 +78,7 @@ const vtkIceSinglePassInterior* vtkIceInteriorDrawer::BeginScreenInterior(
   mapper->BindEnvironment(ren, actor);
   mapper->SetEnvironmentUniforms(program);
   mapper->PrepareInterior(ren, actor, program);
-  return mapper->SinglePass.get();
+  return mapper->InteriorTable.get();
 }
 
 //------------------------------------------------------------------------------

@@ -11,7 +11,7 @@
 
 class vtkActor;
 class vtkIceMapper;
-class vtkIceSinglePassInterior;
+class vtkIceInteriorTable;
 class vtkRenderer;
 class vtkShaderProgram;
 
@@ -28,7 +28,7 @@ public:
   // The interior's table, textures, environment and look of `actor` ready for `program` (the
   // screen-space interior's), until EndScreenInterior; returns the interior prepared, or null
   // (nothing readied, no EndScreenInterior) when the mapper has no input it draws.
-  static const vtkIceSinglePassInterior* BeginScreenInterior(
+  static const vtkIceInteriorTable* BeginScreenInterior(
     vtkIceMapper* mapper, vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program);
   static void EndScreenInterior(vtkIceMapper* mapper, vtkRenderer* ren);
 };

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The look of the ice's interior (cracks and air), in one place for both ways of drawing it: the
-// paper's passes (vtkIceInterior's crack and air mappers) and the single pass
-// (vtkIceSinglePassInterior). The constants are handed to the GLSL of both as #defines; the
+// paper's passes (vtkIceInterior's crack and air mappers) and the screen-space interior
+// (vtkIceInteriorTable). The constants are handed to the GLSL of both as #defines; the
 // shading functions they share are in glsl/vtkIceInteriorLookFS.glsl.
 #ifndef vtkIceInteriorLook_h
 #define vtkIceInteriorLook_h
@@ -14,9 +14,9 @@ namespace vtkIceInteriorLook
 {
 // The cracks' highlight: VTK's specular term of this power (specular 1, white).
 constexpr double CrackSpecularPower = 40.0;
-// The cracks as sheets (the single pass, vtkIceMapper::CrackReflection): how much of the bumps'
-// tilt the mirror keeps, the share of a crack's radius along its outline that scatters white, and
-// how white per unit of CrackReflection.
+// The cracks as sheets (the screen-space interior, vtkIceProperty::CrackReflection): how much of
+// the bumps' tilt the mirror keeps, the share of a crack's radius along its outline that scatters
+// white, and how white per unit of CrackReflection.
 constexpr double CrackMirrorBumps = 0.3;
 constexpr double CrackEdgeWidth = 0.06;
 constexpr double CrackEdge = 1.25;

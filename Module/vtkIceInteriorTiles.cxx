@@ -3,7 +3,7 @@
 #include "vtkIceInteriorTiles.h"
 
 #include "vtkIceScreenRegion.h"
-#include "vtkIceSinglePassInterior.h"
+#include "vtkIceInteriorTable.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -97,7 +97,7 @@ bool Meets(
 
 //------------------------------------------------------------------------------
 void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
-  const vtkIceSinglePassInterior& interior, int width, int height, const int rect[4])
+  const vtkIceInteriorTable& interior, int width, int height, const int rect[4])
 {
   // Tiles from a multiple of TileSize below the rectangle, so that 2 x 2 pixel quads (whose
   // derivatives the air's texture lookups take) never straddle two tiles.

@@ -15,7 +15,7 @@
 #include <vector>
 
 class vtkActor;
-class vtkIceSinglePassInterior;
+class vtkIceInteriorTable;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -30,7 +30,7 @@ public:
   // The lists for `interior`'s records (prepared for `actor`) in a viewport of `width` x
   // `height` pixels, inside `rect` (the prop's covered pixels, { x0, y0, x1, y1 }); uploaded and
   // activated until Finish.
-  void Update(vtkRenderer* renderer, vtkActor* actor, const vtkIceSinglePassInterior& interior,
+  void Update(vtkRenderer* renderer, vtkActor* actor, const vtkIceInteriorTable& interior,
     int width, int height, const int rect[4]);
   void SetUniforms(vtkShaderProgram* program);
   void Finish();

@@ -16,7 +16,7 @@
 #include "vtkIcePrefilteredEnvironment.h"
 #include "vtkIcePropertyUniforms.h"
 #include "vtkIceShaderSections.h"
-#include "vtkIceSinglePassInterior.h"
+#include "vtkIceInteriorTable.h"
 #include "vtkIceStaticEnvironment.h"
 #include "vtkIceSurfaceCheck.h"
 #include "vtkIceScreenInteriorFS.h"
@@ -49,7 +49,6 @@ enum ShaderParts
   BumpPart = 4,
   NormalMapPart = 8,
   GlisteningPart = 16,
-  InteriorPart = 32,
   RoughPart = 64
 };
 
@@ -58,7 +57,7 @@ enum ShaderParts
 //------------------------------------------------------------------------------
 vtkIceMapper::vtkIceMapper()
   : IceProperty(vtkSmartPointer<vtkIceProperty>::New())
-  , SinglePass(new vtkIceSinglePassInterior)
+  , InteriorTable(new vtkIceInteriorTable)
   , Interior(new vtkIceInterior)
   , Environment(new vtkIceStaticEnvironment)
   , Prefiltered(new vtkIcePrefilteredEnvironment)
@@ -142,13 +141,6 @@ bool vtkIceMapper::HasInterior() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkIceMapper::UsesSinglePassInterior() const
-{
-  return this->InteriorMethod == InteriorSinglePass && this->DebugView != DebugCracksUnclipped &&
-    this->HasInterior();
-}
-
-//------------------------------------------------------------------------------
 bool vtkIceMapper::UsesScreenInterior() const
 {
   return this->InteriorMethod == InteriorScreenSpace && this->DebugView != DebugCracksUnclipped &&
@@ -173,11 +165,7 @@ int vtkIceMapper::GetFrameNeeds()
   {
     needs |= vtkIceFrame::NeedsDepthIntervalBeforeScene;
   }
-  if (this->UsesSinglePassInterior())
-  {
-    needs |= vtkIceFrame::NeedsBackDepthForInterior;
-  }
-  else if (this->UsesScreenInterior())
+  if (this->UsesScreenInterior())
   {
     needs |= vtkIceFrame::NeedsBackDepthForInterior | vtkIceFrame::NeedsScreenInterior;
   }
@@ -211,10 +199,6 @@ int vtkIceMapper::ShaderVariant() const
   if (this->IceProperty->GetGlistening())
   {
     variant |= GlisteningPart;
-  }
-  if (this->UsesSinglePassInterior())
-  {
-    variant |= InteriorPart;
   }
   if (this->IceProperty->GetRoughness() > 0.0)
   {
@@ -294,9 +278,8 @@ void vtkIceMapper::WarnSettingsWithoutEffect(bool withPass)
     !this->WarnedCoreWithPaperPasses)
   {
     vtkWarningMacro(<< "MilkyCoreRadius " << this->IceProperty->GetMilkyCoreRadius()
-                    << " shows nothing with InteriorPaperPasses: the single-pass and screen-space "
-                       "interiors draw the milky core. Set InteriorMethod to InteriorSinglePass or "
-                       "InteriorScreenSpace to see it.");
+                    << " shows nothing with InteriorPaperPasses: the screen-space interior draws "
+                       "the milky core. Set InteriorMethod to InteriorScreenSpace to see it.");
     this->WarnedCoreWithPaperPasses = true;
   }
 }
@@ -423,15 +406,7 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
       vtkIceGlistening::Code(
         lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount));
   }
-  if (variant & InteriorPart)
-  {
-    // Its call fills the Interior hook when vtkIcePass has rendered the back faces' depth.
-    const auto& lights = this->PrimitiveInfo[this->LastBoundBO];
-    parts.FragmentDeclarations += vtkIceSinglePassInterior::Declarations();
-    parts.FragmentFunctions += vtkIceSinglePassInterior::Functions(
-      lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount);
-  }
-  this->AddFrameInputParts(parts, variant & InteriorPart);
+  this->AddFrameInputParts(parts);
   if (this->DrawingEdges(ren, act))
   {
     // VTK's edge code (before the lighting) weighs edge pixels by emix; the ice colour replaces
@@ -442,7 +417,7 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::AddFrameInputParts(vtkIceShaderParts& parts, bool interior)
+void vtkIceMapper::AddFrameInputParts(vtkIceShaderParts& parts)
 {
   // Each compiled where vtkIcePass's frame defines its input (vtkIceFrame::Input), after the
   // surface's own functions; the back-face target's sampler declared once, before what samples it.
@@ -467,12 +442,11 @@ void vtkIceMapper::AddFrameInputParts(vtkIceShaderParts& parts, bool interior)
       "    icePathLength = iceEyePathLength(e, iceViewDirectionWC, iceViewDepth(),\n"
       "      texelFetch(iceBackNormals, iceScreenTexel(), 0).a);\n"
       "#endif"));
-  // The single pass's interior, or the screen-space step's result.
+  // The screen-space step's result.
   parts.FragmentFunctions +=
     guarded("ICE_FRAME_SCREEN_INTERIOR", Get(vtkIceScreenInteriorFS, "SurfaceDec"));
-  parts.Hooks.emplace_back("Interior",
-    (interior ? guarded("ICE_FRAME_INTERIOR", vtkIceSinglePassInterior::Call()) : "") +
-      guarded("ICE_FRAME_SCREEN_INTERIOR", Get(vtkIceScreenInteriorFS, "SurfaceCall")));
+  parts.Hooks.emplace_back(
+    "Interior", guarded("ICE_FRAME_SCREEN_INTERIOR", Get(vtkIceScreenInteriorFS, "SurfaceCall")));
   parts.Hooks.emplace_back(
     "Debug", guarded("ICE_FRAME_DEPTH_DEBUG", Get(vtkIceDebugDepthFS, "Impl")));
 }
@@ -522,19 +496,14 @@ void vtkIceMapper::SetIceShaderParameters(
     parameters.NoiseTextureUnit = noise->GetTextureUnit();
     vtkIceGlistening::SetUniforms(program, parameters);
   }
-  // The single-pass interior, where the frame gives the back depth.
-  if (this->ActiveFrameInputs & vtkIceFrame::InteriorInput)
-  {
-    this->PrepareInterior(ren, act, program);
-  }
 }
 
 //------------------------------------------------------------------------------
 void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program)
 {
-  if (!this->SinglePassPrepared)
+  if (!this->InteriorPrepared)
   {
-    vtkIceSinglePassInterior::Settings settings;
+    vtkIceInteriorTable::Settings settings;
     settings.Cracks = this->InputFlat ? 0 : this->IceProperty->GetNumberOfCracks();
     settings.CrackSeed = this->IceProperty->GetCrackSeed();
     settings.CrackIntensity = this->IceProperty->GetCrackIntensity();
@@ -561,20 +530,20 @@ void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderPro
     {
       settings.Cracks = 0;
     }
-    this->SinglePass->Prepare(ren, act, this->PreparedInput, settings,
+    this->InteriorTable->Prepare(ren, act, this->PreparedInput, settings,
       this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
-    this->SinglePassPrepared = true;
+    this->InteriorPrepared = true;
   }
-  this->SinglePass->SetUniforms(program);
+  this->InteriorTable->SetUniforms(program);
 }
 
 //------------------------------------------------------------------------------
 void vtkIceMapper::FinishInterior(vtkRenderer* ren)
 {
-  if (this->SinglePassPrepared)
+  if (this->InteriorPrepared)
   {
-    this->SinglePass->Finish(ren);
-    this->SinglePassPrepared = false;
+    this->InteriorTable->Finish(ren);
+    this->InteriorPrepared = false;
   }
 }
 
@@ -661,7 +630,7 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
   this->Environment->ReleaseGraphicsResources(win);
   this->Prefiltered->ReleaseGraphicsResources(win);
   this->Interior->ReleaseGraphicsResources(win);
-  this->SinglePass->ReleaseGraphicsResources(win);
+  this->InteriorTable->ReleaseGraphicsResources(win);
   if (this->GlisteningNoise)
   {
     this->GlisteningNoise->ReleaseGraphicsResources(win);
@@ -686,7 +655,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
   os << indent << "CullHiddenBackfaces: " << (this->CullHiddenBackfaces ? "On" : "Off") << "\n";
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
-  static const char* const interiorMethods[] = { "PaperPasses", "SinglePass", "ScreenSpace" };
+  static const char* const interiorMethods[] = { "PaperPasses", "ScreenSpace" };
   os << indent << "InteriorMethod: " << interiorMethods[this->InteriorMethod] << "\n";
   os << indent
      << "CrackClipping: " << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval")

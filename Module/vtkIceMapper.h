@@ -20,8 +20,8 @@
  * vtkIcePass also draws the ice's cracks (NumberOfCracks generic crack surfaces placed at random
  * inside, showing only their specular highlights), clipped to the ice either per fragment by its
  * depth interval or once on the CPU (CrackClipping), and its air: NumberOfAirPlanes planes of
- * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: in the ice's
- * own fragment shader along the view ray (default), or the paper's passes. BumpStrength and
+ * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: once per pixel
+ * along the view ray (default), or the paper's passes. BumpStrength and
  * BumpScale make the surface bumpy. Air, cracks and bumps are on by default (the paper's full
  * look); set them to 0 for clean optics.
  *
@@ -47,7 +47,7 @@
 
 class vtkActor;
 class vtkIceInterior;
-class vtkIceSinglePassInterior;
+class vtkIceInteriorTable;
 class vtkIcePrefilteredEnvironment;
 class vtkIceStaticEnvironment;
 class vtkIceBackfaceCulling;
@@ -371,27 +371,25 @@ public:
   enum InteriorMethods
   {
     InteriorPaperPasses = 0, // the paper: a depth-interval pass, crack and air draws per ice
-    InteriorSinglePass = 1,  // in the ice's own fragment shader, intersected along the view ray
-    InteriorScreenSpace = 2  // as the single pass, once per pixel in a step of vtkIcePass
+    InteriorScreenSpace = 1  // once per pixel, along the view ray, in a step of vtkIcePass
   };
 
   ///@{
   /**
-   * How the cracks and air inside the ice are rendered (all need vtkIcePass).
+   * How the cracks and air inside the ice are rendered (both need vtkIcePass).
    * InteriorScreenSpace (default): once per covered pixel by a screen-space step of vtkIcePass
    * before the scene (inside the ice's projected bounding box, from the ice's own front faces
    * and the back faces' depth, each pixel's ray intersected with the crack sheets and air planes
    * its 16 x 16 pixel tile can meet) and applied by the ice's surface: its cost follows the ice's
-   * pixels, not its triangles or their overdraw. InteriorSinglePass: the same look in the ice's
-   * own fragment shader, once per fragment, with every crack and plane. InteriorPaperPasses: the
-   * paper's method: the ice's depth interval is rendered, then the air planes (blended, back to
-   * front) and the crack sheets (their highlights added) are drawn over it; no crack sheets'
-   * mirror and no milky core. Documentation/performance.md compares the three. DebugCracksUnclipped
-   * always uses the paper's passes.
+   * pixels, not its triangles or their overdraw. InteriorPaperPasses: the paper's method: the
+   * ice's depth interval is rendered, then the air planes (blended, back to front) and the crack
+   * sheets (their highlights added) are drawn over it; no crack sheets' mirror and no milky core.
+   * Documentation/performance.md compares the two. DebugCracksUnclipped always uses the paper's
+   * passes. (Before VTK Ice 2026-12-04 a third value, 1, drew the interior in the ice's own
+   * fragment shader; it is now the screen-space step's value, which draws the same look.)
    */
   vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorScreenSpace);
   vtkGetMacro(InteriorMethod, int);
-  void SetInteriorMethodToSinglePass() { this->SetInteriorMethod(InteriorSinglePass); }
   void SetInteriorMethodToPaperPasses() { this->SetInteriorMethod(InteriorPaperPasses); }
   void SetInteriorMethodToScreenSpace() { this->SetInteriorMethod(InteriorScreenSpace); }
   ///@}
@@ -455,8 +453,8 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   // The parts that use what vtkIcePass's frame gives (vtkIceFrame::Input), each compiled where
-  // the frame defines it; `interior`: the single-pass interior's call too.
-  void AddFrameInputParts(vtkIceShaderParts& parts, bool interior);
+  // the frame defines it.
+  void AddFrameInputParts(vtkIceShaderParts& parts);
 
   // Which optional shader parts of the mapper's own the next build includes (bumps, glistening;
   // vtkIcePass adds the parts that sample its textures).
@@ -473,10 +471,9 @@ protected:
 
   // Whether the interior (cracks or air) is drawn in this frame, and by which method.
   bool HasInterior() const;
-  bool UsesSinglePassInterior() const;
   bool UsesScreenInterior() const;
-  // The single pass's or the screen step's interior: its table and textures ready for a draw of
-  // `act` (until FinishInterior), its uniforms set on `program`.
+  // The screen step's interior: its table and textures ready for a draw of `act` (until
+  // FinishInterior), its uniforms set on `program`.
   void PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program);
   void FinishInterior(vtkRenderer* ren);
   // The environment the ice samples in a draw of `act` (a dynamic cube map is bound by the
@@ -499,8 +496,8 @@ protected:
   vtkSmartPointer<vtkIceGlisteningTexture> GlisteningNoise;
 
   std::map<const vtkOpenGLHelper*, int> ShaderVariantBuilt;
-  std::unique_ptr<vtkIceSinglePassInterior> SinglePass;
-  bool SinglePassPrepared = false; // during a draw
+  std::unique_ptr<vtkIceInteriorTable> InteriorTable; // the screen-space interior's records
+  bool InteriorPrepared = false;                       // during a draw
 
   // The renderer's environment or the built-in sky, when no pass hands a dynamic cube map.
   std::unique_ptr<vtkIceStaticEnvironment> Environment;

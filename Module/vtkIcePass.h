@@ -106,8 +106,8 @@ public:
   /**
    * The steps GetStepTime reports: the cube maps of the dynamic environment (all their faces),
    * the depth interval of all the ice before the scene, the back faces' normals and depth, the
-   * scene (the delegate: every prop, the ice surfaces with their single-pass interior, and the
-   * interior step when the default delegate draws it), and the interior of the paper's passes
+   * scene (the delegate: every prop, the ice surfaces, and the screen-space interior's step when
+   * the default delegate draws it), and the interior of the paper's passes
    * (each ice's own depth interval, air and cracks).
    */
   enum Steps

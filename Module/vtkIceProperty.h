@@ -169,8 +169,7 @@ public:
    * Cracks as sheets: how much of the reflectance of a thin gap of air in the ice (Fresnel's,
    * all of it at glancing angles: total internal reflection) a crack mirrors of the environment,
    * its outline whitening with it. 0: the highlights alone, the paper's look. Default 0.4;
-   * clamped to [0, 1]. Drawn by the mapper's screen-space and single-pass interiors with
-   * vtkIcePass.
+   * clamped to [0, 1]. Drawn by the mapper's screen-space interior with vtkIcePass.
    */
   virtual void SetCrackReflection(double reflection);
   virtual double GetCrackReflectionMinValue() { return 0.0; }
@@ -212,7 +211,7 @@ public:
    * Milkiness 1 loses 98 % of what is behind) and draws the air planes' bubbles towards it. Its
    * radius is this fraction of the ice's half size along each axis; the cloud thins smoothly
    * beyond it. 0 (the default): no core. Clamped to [0, 10]. Drawn by the mapper's screen-space
-   * and single-pass interiors with vtkIcePass.
+   * interior with vtkIcePass.
    */
   virtual void SetMilkyCoreRadius(double radius);
   virtual double GetMilkyCoreRadiusMinValue() { return 0.0; }

@@ -10,7 +10,7 @@
 #include "vtkIceScreenInteriorFS.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
-#include "vtkIceSinglePassInterior.h"
+#include "vtkIceInteriorTable.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceWorldSpaceFS.h"
 
@@ -44,8 +44,8 @@ std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
     renderer->GetLightingUniforms() +
     vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") + Get(vtkIceSurfaceFS, "Environment") +
     "uniform float iceRefractionRatio;\n" + Get(vtkIceScreenInteriorFS, "Tiles") +
-    vtkIceSinglePassInterior::Declarations() +
-    vtkIceSinglePassInterior::Functions(complexity, renderer->GetLightingCount()) +
+    vtkIceInteriorTable::Declarations() +
+    vtkIceInteriorTable::Functions(complexity, renderer->GetLightingCount()) +
     Get(vtkIceScreenInteriorFS, "Dec");
   std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
   vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", declarations);
@@ -124,7 +124,7 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest ? nearest : frontDepth);
   frame->BindCubeMap(program, actor);
   renderer->UpdateLightingUniforms(program);
-  const vtkIceSinglePassInterior* interior =
+  const vtkIceInteriorTable* interior =
     vtkIceInteriorDrawer::BeginScreenInterior(mapper, renderer, actor, program);
   if (!interior)
   {

@@ -53,7 +53,7 @@ struct Configuration
   Material Ice = Material::Plain;
   int Cracks = 0;
   int AirPlanes = 0;                 // vtkIceMapper::NumberOfAirPlanes
-  int Interior = 1;                  // vtkIceMapper::InteriorMethods (1: InteriorSinglePass)
+  int Interior = 1;                  // vtkIceMapper::InteriorMethods (1: InteriorScreenSpace)
   bool PlainBackfaceCulling = false; // plain VTK with its property's BackfaceCulling on
   bool DrawEveryFace = false;        // vtkIceMapper::CullHiddenBackfaces off
   bool CubeMap = false;
@@ -151,8 +151,8 @@ int Parse(int argc, char* argv[], Options& options);
 // The groups of a run: all, or those of --quick (shortened), whose id contains `only`.
 std::vector<Group> SelectGroups(bool quick, const std::string& only);
 
-// An interior method (vtkIceMapper::InteriorMethods) in words ("single pass") and in the CSV
-// ("single-pass").
+// An interior method (vtkIceMapper::InteriorMethods) in words ("screen space") and in the CSV
+// ("screen-space").
 std::string InteriorName(int interior);
 std::string InteriorId(int interior);
 

@@ -34,12 +34,11 @@ Configuration PlainCulled()
   return c;
 }
 
-const int SinglePass = vtkIceMapper::InteriorSinglePass;
 const int PaperPasses = vtkIceMapper::InteriorPaperPasses;
 const int ScreenSpace = vtkIceMapper::InteriorScreenSpace;
 
 Configuration Ice(
-  const std::string& label, Material material, int cracks = 0, int interior = SinglePass)
+  const std::string& label, Material material, int cracks = 0, int interior = ScreenSpace)
 {
   Configuration c;
   c.Label = label;
@@ -90,7 +89,6 @@ std::vector<Group> DefineGroups()
         Ice("two-sided ice", Material::TwoSided),
         EveryFace(Ice("two-sided ice, every face drawn", Material::TwoSided)),
         Ice("two-sided ice, exit point", Material::ExitPoint),
-        Ice("full look, single pass", Material::FullLook),
         Ice("full look, paper passes", Material::FullLook, 2, PaperPasses),
         Ice("full look, screen space", Material::FullLook, 2, ScreenSpace) };
       groups.push_back(g);
@@ -123,7 +121,7 @@ std::vector<Group> DefineGroups()
   cracks.Object = "teapot";
   cracks.Quick = true;
   cracks.Configurations = { Plain() };
-  for (int interior : { SinglePass, PaperPasses, ScreenSpace })
+  for (int interior : { PaperPasses, ScreenSpace })
   {
     for (int n : { 0, 2, 8, 32, 128 })
     {
@@ -143,7 +141,7 @@ std::vector<Group> DefineGroups()
     g.Quick = std::string(size) == "1k" || std::string(size) == "10k";
     // The full look too: at the same coverage, whether its cost follows the triangles.
     g.Configurations = { Plain(), Ice("one-sided ice", Material::OneSided),
-      Ice("two-sided ice", Material::TwoSided), Ice("full look, single pass", Material::FullLook),
+      Ice("two-sided ice", Material::TwoSided),
       Ice("full look, paper passes", Material::FullLook, 2, PaperPasses),
       Ice("full look, screen space", Material::FullLook, 2, ScreenSpace) };
     groups.push_back(g);
@@ -199,9 +197,7 @@ std::vector<Group> IceBench::SelectGroups(bool quick, const std::string& only)
 
 std::string IceBench::InteriorName(int interior)
 {
-  return interior == PaperPasses ? "paper passes"
-    : interior == ScreenSpace    ? "screen space"
-                                 : "single pass";
+  return interior == PaperPasses ? "paper passes" : "screen space";
 }
 
 std::string IceBench::InteriorId(int interior)

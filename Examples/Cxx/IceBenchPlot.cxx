@@ -124,13 +124,13 @@ void Objects(
   vtkNew<vtkTable> table;
   table->AddColumn(Column("x", rows));
   // The series: material and interior method.
-  const int single = vtkIceMapper::InteriorSinglePass;
-  const Material materials[5] = { Material::OneSided, Material::TwoSided, Material::FullLook,
-    Material::FullLook, Material::FullLook };
-  const int interior[5] = { single, single, single, vtkIceMapper::InteriorPaperPasses,
-    vtkIceMapper::InteriorScreenSpace };
-  const char* series[5] = { "one-sided", "two-sided", "full look, single pass",
-    "full look, paper passes", "full look, screen space" };
+  const int screen = vtkIceMapper::InteriorScreenSpace;
+  const Material materials[4] = { Material::OneSided, Material::TwoSided, Material::FullLook,
+    Material::FullLook };
+  const int interior[4] = { screen, screen, vtkIceMapper::InteriorPaperPasses, screen };
+  const char* series[4] = { "one-sided", "two-sided", "full look, paper passes",
+    "full look, screen space" };
+  const int colors[4] = { 1, 2, 3, 5 };
   for (const char* name : series)
   {
     table->AddColumn(Column(name, rows));
@@ -143,7 +143,7 @@ void Objects(
     positions.push_back(static_cast<double>(r + 1));
     for (const Configuration& c : shown[r]->Configurations)
     {
-      for (int m = 0; m < 5; ++m)
+      for (int m = 0; m < 4; ++m)
       {
         if (c.Ice == materials[m] && c.Interior == interior[m] && !c.DrawEveryFace)
         {
@@ -153,11 +153,12 @@ void Objects(
       }
     }
   }
-  for (int m = 0; m < 5; ++m)
+  for (int m = 0; m < 4; ++m)
   {
     vtkPlot* bars = chart->AddPlot(vtkChart::BAR);
     bars->SetInputData(table, "x", series[m]);
-    bars->SetColor(Colors[m + 1][0], Colors[m + 1][1], Colors[m + 1][2]);
+    const double* color = Colors[colors[m]];
+    bars->SetColor(color[0], color[1], color[2]);
   }
   // Targets: two-sided <= 1.3, full look <= 1.5.
   vtkNew<vtkTable> targets;
@@ -269,14 +270,14 @@ void Triangles(
   const vtkIdType rows = static_cast<vtkIdType>(shown.size());
   vtkNew<vtkTable> table;
   table->AddColumn(Column("triangles", rows));
-  // The full look with its cost per fragment (single pass) and per pixel (screen space).
-  const char* series[5] = { "plain VTK", "one-sided ice", "two-sided ice", "full look, single pass",
-    "full look, screen space" };
+  // The full look with its cost per fragment (paper passes) and per pixel (screen space).
+  const char* series[5] = { "plain VTK", "one-sided ice", "two-sided ice",
+    "full look, paper passes", "full look, screen space" };
   const Material materials[5] = { Material::Plain, Material::OneSided, Material::TwoSided,
     Material::FullLook, Material::FullLook };
-  const int interior[5] = { 0, 0, 0, vtkIceMapper::InteriorSinglePass,
+  const int interior[5] = { 0, 0, 0, vtkIceMapper::InteriorPaperPasses,
     vtkIceMapper::InteriorScreenSpace };
-  const int colors[5] = { 0, 1, 2, 4, 5 };
+  const int colors[5] = { 0, 1, 2, 3, 5 };
   for (const char* name : series)
   {
     table->AddColumn(Column(name, rows));
@@ -322,7 +323,7 @@ void Cracks(
   std::vector<int> counts;
   for (const Configuration& c : g->Configurations)
   {
-    if (c.Ice != Material::Plain && c.Interior == vtkIceMapper::InteriorSinglePass)
+    if (c.Ice != Material::Plain && c.Interior == vtkIceMapper::InteriorScreenSpace)
     {
       counts.push_back(c.Cracks);
     }
@@ -331,7 +332,6 @@ void Cracks(
   vtkNew<vtkTable> table;
   table->AddColumn(Column("position", rows));
   table->AddColumn(Column("plain VTK", rows));
-  table->AddColumn(Column("single pass", rows));
   table->AddColumn(Column("paper passes", rows));
   table->AddColumn(Column("screen space", rows));
   std::vector<double> positions;
@@ -344,9 +344,7 @@ void Cracks(
     {
       if (c.Ice != Material::Plain && c.Cracks == counts[r])
       {
-        const int column = c.Interior == vtkIceMapper::InteriorPaperPasses ? 3
-          : c.Interior == vtkIceMapper::InteriorScreenSpace                ? 4
-                                                                           : 2;
+        const int column = c.Interior == vtkIceMapper::InteriorPaperPasses ? 2 : 3;
         table->SetValue(r, column, c.Stats.Median);
       }
     }
@@ -354,7 +352,6 @@ void Cracks(
     labels.push_back(std::to_string(counts[r]));
   }
   Line(chart, table, "position", "plain VTK", Colors[0]);
-  Line(chart, table, "position", "single pass", Colors[2]);
   Line(chart, table, "position", "paper passes", Colors[3]);
   Line(chart, table, "position", "screen space", Colors[5]);
   Labels(chart->GetAxis(vtkAxis::BOTTOM), positions, labels);

@@ -42,7 +42,7 @@ public:
   ///@}
 
   /**
-   * The shape of model `seed` (the single-pass interior intersects it analytically): the sheet
+   * The shape of model `seed` (the screen-space interior intersects it analytically): the sheet
    * is z = Bowl (x^2 + y^2) + Saddle (x^2 - y^2), plus Roughness times noise, inside the outline
    * radius OutlineRadius(angle).
    */

@@ -162,10 +162,10 @@ std::vector<Entry> MakeEntries()
     Kind::Integer);
   ICE_PROPERTY_NUMBER("crack-intensity", "brightness of the cracks' highlights", CrackIntensity);
   ICE_PROPERTY_NUMBER("crack-reflection",
-    "cracks as sheets mirroring the environment, 0 highlights only (single-pass, screen-space)",
+    "cracks as sheets mirroring the environment, 0 highlights only (screen-space)",
     CrackReflection);
   ICE_MAPPER_CHOICE("interior", "how cracks and air are rendered", InteriorMethod, "paper-passes",
-    "single-pass", "screen-space");
+    "screen-space");
   ICE_MAPPER_CHOICE("crack-clipping", "how cracks are kept inside the ice (paper-passes)",
     CrackClipping, "depth-interval", "geometry");
   ICE_MAPPER_SWITCH(

@@ -3,7 +3,7 @@
 //ICE::Dec
 // VTK draws edges by growing each triangle in its geometry shader by half a line width on the
 // screen, with the varyings of the original corners: inside the triangle they are then
-// stretched (bubbles and cracks moved by up to 15/255 in the single pass). The ice instead puts
+// stretched (bubbles and cracks moved by up to 15/255 in the interior then drawn in the surface). The ice instead puts
 // each grown corner on the triangle's plane and gives it the triangle's values there: weights
 // of the three corners for the grown corner i at `offset` (normalised device coordinates).
 bool iceGrownCornerWeights(int i, vec2 offset, out vec3 weights)

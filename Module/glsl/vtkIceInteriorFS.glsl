@@ -3,10 +3,10 @@
 //ICE::Dec
 // The ice's cracks and air along the view ray from a front-surface point to the nearest back face
 // (its view depth is in the back-face target's alpha), intersected with every crack sheet and air
-// plane of vtkIceSinglePassInterior's table: the air is composited over the ice colour back to
+// plane of vtkIceInteriorTable's table: the air is composited over the ice colour back to
 // front, the cracks' highlights are added on top, as the paper's passes composite them. Evaluated
-// in the ice's own fragment (InteriorSinglePass) or once per pixel by the screen-space step
-// (InteriorScreenSpace, vtkIceScreenInterior), which hands the surface its result.
+// once per pixel by the screen-space step (vtkIceScreenInterior), which hands the surface its
+// result.
 uniform sampler2D iceInteriorTable; // R: crack outlines (rows 0-2); then 4 texels per record
 uniform sampler3D iceInteriorBump;  // periodic noise gradient, 8 noise cells per repeat
 uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
@@ -220,10 +220,3 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float b
     ? vec4(1.0, 0.0, 0.0, 0.0)
     : vec4(t.rgb + iceCrackIntensity * highlights, t.a);
 }
-//ICE::Call
-    if (gl_FrontFacing)
-    {
-      vec4 iceInteriorResult = iceInteriorAlong(icePositionWCVSOutput, icePositionMCVSOutput,
-        iceViewDepth(), texelFetch(iceBackNormals, iceScreenTexel(), 0).a);
-      gl_FragData[0].rgb = gl_FragData[0].rgb * iceInteriorResult.a + iceInteriorResult.rgb;
-    }

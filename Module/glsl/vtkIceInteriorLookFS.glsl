@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
-// The interior's look shared by the paper's passes and the single pass (vtkIceInteriorLook.h
+// The interior's look shared by the paper's passes and the screen-space interior (vtkIceInteriorLook.h
 // defines the ICE_ constants before this).
 
 // One air plane's bubble image seen through the ice: its colour (rgb) and coverage (a).

@@ -71,6 +71,31 @@ Image Capture(vtkRenderWindow* window)
   return FromImageData(grab->GetOutput());
 }
 
+Image ReadPNG(const std::string& path)
+{
+  if (!std::filesystem::exists(path))
+  {
+    return Image();
+  }
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return FromImageData(reader->GetOutput());
+}
+
+void WritePNG(const Image& image, const std::string& path)
+{
+  vtkNew<vtkImageData> data;
+  data->SetDimensions(image.Width, image.Height, 1);
+  data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(
+    image.RGB.begin(), image.RGB.end(), static_cast<unsigned char*>(data->GetScalarPointer()));
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  writer->Write();
+}
+
 int RunCases(const char* test, int argc, char* argv[], const Cases& cases)
 {
   std::string only;

@@ -36,6 +36,9 @@ struct Image
 };
 
 Image Capture(vtkRenderWindow* window);
+// A PNG file as an Image (empty when it cannot be read), and an Image into one.
+Image ReadPNG(const std::string& path);
+void WritePNG(const Image& image, const std::string& path);
 
 // Prints "ok   WHAT" or "FAIL WHAT" and returns `condition`: the tests' one line per check.
 bool Expect(bool condition, const std::string& what);

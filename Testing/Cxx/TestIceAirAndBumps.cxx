@@ -1,11 +1,11 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Air bubbles and the bumpy surface: in both interior methods air makes the inside of the ice
-// whiter, more so with Milkiness, and no bubble pixel lies outside the silhouette (bubbles drawn
-// in green), the single pass showing the bubbles where the paper's passes draw them; bumps change
-// the picture inside the ice only, stay fixed to the model (moving ice and camera together changes
-// nothing), and a normal map works in their place; the same seeds give the same image, another
-// air seed another.
+// whiter, more so with Milkiness, and no bubble pixel lies outside the silhouette (bubbles drawn in
+// green), the screen-space interior showing the bubbles where the paper's passes draw them; bumps
+// change the picture inside the ice only, stay fixed to the model (moving ice and camera together
+// changes nothing), and a normal map works in their place; the same seeds give the same image,
+// another air seed another.
 #include "IceTestUtilities.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
@@ -36,7 +36,7 @@ bool InSilhouette(const IceTest::Image& silhouette, size_t p)
 
 const char* MethodName(int method)
 {
-  return method == vtkIceMapper::InteriorSinglePass ? "single pass: " : "paper passes: ";
+  return method == vtkIceMapper::InteriorScreenSpace ? "screen space: " : "paper passes: ";
 }
 
 bool IsGreen(const unsigned char* g)
@@ -102,18 +102,18 @@ bool Air(int method, IceTest::Image& green)
   return Expect(greenOutside == 0 && greenInside > 1000, name + "no bubble outside the ice") && ok;
 }
 
-// The bubbles' green masks of both methods nearly coincide: the same planes, images and order.
-// Not exactly: the bubbles' thin rims straddle the debug view's alpha cut, and the single pass
-// samples the images without the anisotropic filtering of the paper's passes (0.90 of the pixels
-// agree here; planes placed at random agree on next to none).
-bool MethodsAgree(const IceTest::Image& paper, const IceTest::Image& single)
+// The bubbles' green masks of both methods nearly coincide: the same planes, images and order. Not
+// exactly: the bubbles' thin rims straddle the debug view's alpha cut, and the screen-space
+// interior samples the images without the anisotropic filtering of the paper's passes (0.90 of the
+// pixels agree here; planes placed at random agree on next to none).
+bool MethodsAgree(const IceTest::Image& paper, const IceTest::Image& screen)
 {
   size_t both = 0;
   size_t either = 0;
   for (size_t p = 0; p < paper.RGB.size() / 3; ++p)
   {
     const bool a = IsGreen(&paper.RGB[3 * p]);
-    const bool b = IsGreen(&single.RGB[3 * p]);
+    const bool b = IsGreen(&screen.RGB[3 * p]);
     both += a && b ? 1 : 0;
     either += a || b ? 1 : 0;
   }
@@ -212,10 +212,10 @@ int TestIceAirAndBumps(int, char*[])
 {
   IceTest::Image green[2];
   bool ok = Air(vtkIceMapper::InteriorPaperPasses, green[0]);
-  ok = Air(vtkIceMapper::InteriorSinglePass, green[1]) && ok;
+  ok = Air(vtkIceMapper::InteriorScreenSpace, green[1]) && ok;
   ok = MethodsAgree(green[0], green[1]) && ok;
   ok = Bumps() && ok;
   ok = Seeds(vtkIceMapper::InteriorPaperPasses) && ok;
-  ok = Seeds(vtkIceMapper::InteriorSinglePass) && ok;
+  ok = Seeds(vtkIceMapper::InteriorScreenSpace) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,12 +1,12 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Cracks (paper section 3.3), in both interior methods: drawn in red (DebugCracksClipped) no
-// crack pixel lies outside the ice's silhouette while many lie inside, and unclipped they do stick
-// out; the highlights change the picture inside the ice only and brighten with the light; the same
-// seed gives the same image and another seed another; the single pass finds the cracks where the
-// paper's passes draw them (perspective and parallel projection); the ice costs the same passes and
-// draws per frame whatever NumberOfCracks (paper passes: two depth passes, one crack draw; single
-// pass: neither); and crack normals perturb the refraction only when asked.
+// Cracks (paper section 3.3), in both interior methods: drawn in red (DebugCracksClipped) no crack
+// pixel lies outside the ice's silhouette while many lie inside, and unclipped they do stick out;
+// the highlights change the picture inside the ice only and brighten with the light; the same seed
+// gives the same image and another seed another; the screen-space interior finds the cracks where
+// the paper's passes draw them (perspective and parallel projection); the ice costs the same passes
+// and draws per frame whatever NumberOfCracks (paper passes: two depth passes, one crack draw;
+// screen space: neither); and crack normals perturb the refraction only when asked.
 #include "IceTestUtilities.h"
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceMapper.h"
@@ -51,7 +51,7 @@ void Count(const IceTest::Image& image, const IceTest::Image& silhouette,
 
 const char* MethodName(int method)
 {
-  return method == vtkIceMapper::InteriorSinglePass ? "single pass: " : "paper passes: ";
+  return method == vtkIceMapper::InteriorScreenSpace ? "screen space: " : "paper passes: ";
 }
 
 bool Clipping(int method)
@@ -99,7 +99,8 @@ bool Light(int method)
 {
   IceTest::BlockScene scene;
   scene.Mapper->SetInteriorMethod(method);
-  // The highlights alone: the single pass's sheets mirror the environment, not the lights.
+  // The highlights alone: the screen-space interior's sheets mirror the environment, not the
+  // lights.
   scene.Mapper->SetCrackReflection(0.0);
   const IceTest::Image silhouette = scene.Render();
   vtkNew<vtkLight> light;
@@ -125,8 +126,8 @@ bool Light(int method)
   };
   const double clear = brightness(0, 1.0);
   // Without a light: the cracks against the same cracks with their highlights scaled to 0. (Not
-  // against no cracks: the single pass's interior is another shader program, which Mesa 25's
-  // llvmpipe rounds differently by 1/255 in a few pixels, light or not.)
+  // against no cracks: the screen-space interior's interior is another shader program, which Mesa
+  // 25's llvmpipe rounds differently by 1/255 in a few pixels, light or not.)
   const double intensity = scene.Mapper->GetCrackIntensity();
   scene.Mapper->SetCrackIntensity(0.0);
   const double unlit = brightness(2, 0.0);
@@ -140,13 +141,13 @@ bool Light(int method)
     std::string(MethodName(method)) + "cracks show only in the light and brighten with it");
 }
 
-// The single pass intersects the cracks the paper's passes draw: their red masks in the convex
-// block nearly coincide (the single pass leaves out the sheets' small noise displacement), under
-// perspective and parallel projection.
+// The screen-space interior intersects the cracks the paper's passes draw: their red masks in the
+// convex block nearly coincide (the screen-space interior leaves out the sheets' small noise
+// displacement), under perspective and parallel projection.
 bool MethodsAgree(bool parallel)
 {
   IceTest::Image masks[2];
-  for (int method : { vtkIceMapper::InteriorPaperPasses, vtkIceMapper::InteriorSinglePass })
+  for (int method : { vtkIceMapper::InteriorPaperPasses, vtkIceMapper::InteriorScreenSpace })
   {
     IceTest::BlockScene scene;
     scene.Mapper->SetNumberOfCracks(4);
@@ -161,9 +162,9 @@ bool MethodsAgree(bool parallel)
   for (size_t p = 0; p < masks[0].RGB.size() / 3; ++p)
   {
     const bool paper = IsRed(&masks[0].RGB[3 * p]);
-    const bool single = IsRed(&masks[1].RGB[3 * p]);
-    both += paper && single ? 1 : 0;
-    either += paper || single ? 1 : 0;
+    const bool screen = IsRed(&masks[1].RGB[3 * p]);
+    both += paper && screen ? 1 : 0;
+    either += paper || screen ? 1 : 0;
   }
   const double overlap = either ? static_cast<double>(both) / either : 0.0;
   const std::string projection = parallel ? "parallel projection: " : "perspective: ";
@@ -244,7 +245,7 @@ bool PerturbRefraction()
 int TestIceCracks(int, char*[])
 {
   bool ok = true;
-  for (int method : { vtkIceMapper::InteriorPaperPasses, vtkIceMapper::InteriorSinglePass })
+  for (int method : { vtkIceMapper::InteriorPaperPasses, vtkIceMapper::InteriorScreenSpace })
   {
     ok = Clipping(method) && ok;
     ok = Light(method) && ok;

@@ -1,12 +1,12 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 // Cracks in a concave object, a torus seen from above at an angle. Paper passes: in DepthInterval
-// mode the interval between the near and far side of the ring also covers the hole, so cracks
-// show there (the paper's known limit); Geometry mode clips them to the surface on the CPU and
-// every crack point lies inside the torus. The single pass follows each view ray from the front
-// surface to the nearest back face: cracks show only inside the near part of the ring (none in
-// the hole, none seen through it in the far part). Left to right: depth interval, geometry,
-// single pass, cracks in red. Checked against a reviewed baseline.
+// mode the interval between the near and far side of the ring also covers the hole, so cracks show
+// there (the paper's known limit); Geometry mode clips them to the surface on the CPU and every
+// crack point lies inside the torus. The screen-space interior follows each view ray from the front
+// surface to the nearest back face: cracks show only inside the near part of the ring (none in the
+// hole, none seen through it in the far part). Left to right: depth interval, geometry,
+// screen-space interior, cracks in red. Checked against a reviewed baseline.
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
@@ -78,7 +78,7 @@ int TestIceCracksConcave(int argc, char* argv[])
     mappers[i]->SetNumberOfCracks(4);
     mappers[i]->SetCrackSeed(2);
     mappers[i]->SetInteriorMethod(
-      i < 2 ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorSinglePass);
+      i < 2 ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorScreenSpace);
     mappers[i]->SetCrackClipping(i == 1 ? vtkIceMapper::Geometry : vtkIceMapper::DepthInterval);
     mappers[i]->SetDebugView(vtkIceMapper::DebugCracksClipped);
     actors[i]->SetMapper(mappers[i]);

@@ -2,12 +2,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The two interior methods side by side: the full look (2 cracks, 19 air planes, bumps; the same
 // seeds; the cracks' sheets off, which the paper's passes do not draw) on the block and the
-// teapot, rendered with the paper's passes and in the single pass.
+// teapot, rendered with the paper's passes and in the screen-space interior.
 // Inside the ice the pictures agree closely (mean and 99th percentile of the per-pixel difference
 // bounded) and the interior adds about as much light in both (its mean brightening over the ice
 // without cracks and air, within 30 %); away from the ice they are identical. With VTKICE_FIGURE
 // set to a .png path the test writes the 2 x 2 figure of Documentation/usage.md there (paper
-// passes left, single pass right).
+// passes left, screen space right).
 #include "IceTestUtilities.h"
 #include "vtkIceBlockSource.h"
 #include "vtkIceMapper.h"
@@ -72,12 +72,12 @@ IceTest::Image Render(vtkPolyDataAlgorithm* source, int method, bool ice, bool i
 
 bool Compare(const char* name, vtkPolyDataAlgorithm* source, std::vector<IceTest::Image>& figure)
 {
-  const IceTest::Image background = Render(source, vtkIceMapper::InteriorSinglePass, false);
-  const IceTest::Image clean = Render(source, vtkIceMapper::InteriorSinglePass, true, false);
+  const IceTest::Image background = Render(source, vtkIceMapper::InteriorScreenSpace, false);
+  const IceTest::Image clean = Render(source, vtkIceMapper::InteriorScreenSpace, true, false);
   const IceTest::Image paper = Render(source, vtkIceMapper::InteriorPaperPasses, true);
-  const IceTest::Image single = Render(source, vtkIceMapper::InteriorSinglePass, true);
+  const IceTest::Image screen = Render(source, vtkIceMapper::InteriorScreenSpace, true);
   figure.push_back(paper);
-  figure.push_back(single);
+  figure.push_back(screen);
   // The ice: where it changes the picture, widened by 2 pixels (multisampled edges).
   std::vector<bool> near(static_cast<size_t>(Width) * Height, false);
   for (int y = 0; y < Height; ++y)
@@ -101,19 +101,19 @@ bool Compare(const char* name, vtkPolyDataAlgorithm* source, std::vector<IceTest
   std::vector<double> inside;
   size_t outside = 0;
   double paperAdds = 0.0;
-  double singleAdds = 0.0;
+  double screenAdds = 0.0;
   for (int y = 0; y < Height; ++y)
   {
     for (int x = 0; x < Width; ++x)
     {
-      const int difference = IceTest::PixelDifference(paper.At(x, y), single.At(x, y));
+      const int difference = IceTest::PixelDifference(paper.At(x, y), screen.At(x, y));
       if (IceTest::PixelDifference(background.At(x, y), paper.At(x, y)) > 0)
       {
         inside.push_back(difference);
         for (int c = 0; c < 3; ++c)
         {
           paperAdds += paper.At(x, y)[c] - clean.At(x, y)[c];
-          singleAdds += single.At(x, y)[c] - clean.At(x, y)[c];
+          screenAdds += screen.At(x, y)[c] - clean.At(x, y)[c];
         }
       }
       else if (!near[static_cast<size_t>(y) * Width + x])
@@ -124,18 +124,18 @@ bool Compare(const char* name, vtkPolyDataAlgorithm* source, std::vector<IceTest
   }
   const IceTest::Stats stats = IceTest::Summarize(inside);
   const double count = 3.0 * std::max<size_t>(stats.Count, 1);
-  const double ratio = singleAdds / std::max(paperAdds, 1.0);
+  const double ratio = screenAdds / std::max(paperAdds, 1.0);
   const bool ok = stats.Count > 5000 && stats.Mean < 10.0 && stats.P99 < 100.0 && outside == 0 &&
     ratio > 0.7 && ratio < 1.3;
-  std::cout << (ok ? "ok   " : "FAIL ") << name << ": single pass against paper passes over "
+  std::cout << (ok ? "ok   " : "FAIL ") << name << ": screen space against paper passes over "
             << stats.Count << " ice pixels: mean " << stats.Mean << "/255, p99 " << stats.P99
             << "/255, max " << stats.Max << "/255; the interior brightens the ice by "
-            << paperAdds / count << "/255 (paper passes) and " << singleAdds / count
-            << "/255 (single pass); " << outside << " pixels differ away from the ice\n";
+            << paperAdds / count << "/255 (paper passes) and " << screenAdds / count
+            << "/255 (screen space); " << outside << " pixels differ away from the ice\n";
   return ok;
 }
 
-// Paper passes left, single pass right; the block above the teapot.
+// Paper passes left, screen space right; the block above the teapot.
 void WriteFigure(const char* path, const std::vector<IceTest::Image>& images)
 {
   vtkNew<vtkImageData> figure;

@@ -153,7 +153,7 @@ bool CloseAndReopen(int interiorMethod)
   IceScene scene;
   scene.Mapper->SetInteriorMethod(interiorMethod);
   const std::string method =
-    interiorMethod == vtkIceMapper::InteriorSinglePass ? "single pass: " : "paper passes: ";
+    interiorMethod == vtkIceMapper::InteriorScreenSpace ? "screen space: " : "paper passes: ";
   auto window = MakeWindow(scene.Renderer, 240, 180);
   window->Render();
   const IceTest::Image before = IceTest::Capture(window);
@@ -659,7 +659,8 @@ int TestIceLifecycle(int argc, char* argv[])
   const IceTest::Cases cases = {
     { "close-reopen-paper-passes",
       [] { return CloseAndReopen(vtkIceMapper::InteriorPaperPasses); } },
-    { "close-reopen-single-pass", [] { return CloseAndReopen(vtkIceMapper::InteriorSinglePass); } },
+    { "close-reopen-screen-space",
+      [] { return CloseAndReopen(vtkIceMapper::InteriorScreenSpace); } },
     { "deleted-pass", DeletedPassLeavesNothing },
     { "two-windows", TwoWindows },
     { "layers", Layers },

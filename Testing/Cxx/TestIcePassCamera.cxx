@@ -76,7 +76,7 @@ bool Run(int interiorMethod)
   const bool ok = modified == 0 && camera->GetMTime() == mtime && clipping[0] == 0.1 &&
     clipping[1] == 100.0 && passesRan;
   std::cout << (ok ? "ok   " : "FAIL ") << "10 renders with the full ice ("
-            << (paper ? "paper passes" : "single pass") << "): " << modified
+            << (paper ? "paper passes" : "screen space") << "): " << modified
             << " camera ModifiedEvents, MTime " << mtime << " -> " << camera->GetMTime()
             << ", clipping range " << clipping[0] << ", " << clipping[1] << "\n";
   return ok;
@@ -86,6 +86,6 @@ bool Run(int interiorMethod)
 int TestIcePassCamera(int, char*[])
 {
   const bool paper = Run(vtkIceMapper::InteriorPaperPasses);
-  const bool single = Run(vtkIceMapper::InteriorSinglePass);
-  return paper && single ? EXIT_SUCCESS : EXIT_FAILURE;
+  const bool screen = Run(vtkIceMapper::InteriorScreenSpace);
+  return paper && screen ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -130,14 +130,15 @@ bool DepthIntervalOnlyWhenRead()
   scene.Mapper->SetInteriorMethodToPaperPasses();
   ok =
     Expect(passesPerFrame() == 2, "air in the paper's passes: the depth-interval pass runs") && ok;
-  scene.Mapper->SetInteriorMethodToSinglePass();
-  ok = Expect(passesPerFrame() == 0, "air in a single pass: no depth-interval pass") && ok;
+  scene.Mapper->SetInteriorMethodToScreenSpace();
+  ok = Expect(passesPerFrame() == 0, "air, screen-space interior: no depth-interval pass") && ok;
   scene.Mapper->SetNumberOfAirPlanes(0);
   scene.Mapper->SetDebugView(vtkIceMapper::DebugBackDepth);
   ok = Expect(passesPerFrame() == 2, "a depth debug view: the depth-interval pass runs") && ok;
   scene.Mapper->SetDebugView(vtkIceMapper::DebugOff);
   scene.Mapper->SetNumberOfCracks(2);
-  ok = Expect(passesPerFrame() == 0, "cracks in a single pass: no depth-interval pass") && ok;
+  ok =
+    Expect(passesPerFrame() == 0, "cracks, screen-space interior: no depth-interval pass") && ok;
   scene.Mapper->SetInteriorMethodToPaperPasses();
   ok =
     Expect(passesPerFrame() == 2, "cracks in the paper's passes: the depth-interval pass runs") &&
@@ -148,7 +149,7 @@ bool DepthIntervalOnlyWhenRead()
 bool BackfaceNormalsOnlyWhenNeeded()
 {
   Scene scene;
-  scene.Mapper->SetInteriorMethodToSinglePass();
+  scene.Mapper->SetInteriorMethodToScreenSpace();
   auto passesPerFrame = [&]() {
     scene.Window->Render();
     const vtkIdType before = scene.Pass->GetBackfaceNormalPass()->GetNumberOfGeometryPasses();
@@ -169,7 +170,7 @@ bool BackfaceNormalsOnlyWhenNeeded()
   scene.Mapper->SetNumberOfAirPlanes(19);
   scene.Mapper->SetInteriorMethodToPaperPasses();
   ok = Expect(passesPerFrame() == 0, "one-sided ice, paper passes: no back-face pass") && ok;
-  scene.Mapper->SetInteriorMethodToSinglePass();
+  scene.Mapper->SetInteriorMethodToScreenSpace();
   scene.Mapper->TwoSidedRefractionOn();
   const IceTest::Image twoSidedAgain = IceTest::Capture(scene.Window);
   ok = Expect(IceTest::CountDiffering(twoSided, twoSidedAgain, 0) == 0, "two-sided again") && ok;

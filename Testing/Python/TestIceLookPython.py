@@ -60,10 +60,10 @@ def test_ranges_are_the_librarys():
 def test_choices_in_enum_order():
     interior = Look.FindSetting("interior")
     names = [Look.GetChoice(interior, j) for j in range(Look.GetNumberOfChoices(interior))]
-    check(names == ["paper-passes", "single-pass", "screen-space"], names)
-    check(names.index("single-pass") == vtkice.vtkIceMapper.InteriorSinglePass)
+    check(names == ["paper-passes", "screen-space"], names)
+    check(names.index("paper-passes") == vtkice.vtkIceMapper.InteriorPaperPasses)
     check(names.index("screen-space") == vtkice.vtkIceMapper.InteriorScreenSpace)
-    check(Look.GetChoice(interior, 3) is None)
+    check(Look.GetChoice(interior, 2) is None)
     check(Look.GetNumberOfChoices(Look.FindSetting("eta")) == 0)
 
 
@@ -82,8 +82,8 @@ def test_apply_sets_and_value_reads():
     check(Look.GetValue(mapper, ice_pass, cube_maps, camera, "cracks") == "7")
     check(Look.Apply(mapper, ice_pass, cube_maps, camera, "cube-map", "off") == "")
     check(ice_pass.GetCubeMapPass() is None)
-    check(Look.Apply(mapper, ice_pass, cube_maps, camera, "interior", "single-pass") == "")
-    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorSinglePass)
+    check(Look.Apply(mapper, ice_pass, cube_maps, camera, "interior", "paper-passes") == "")
+    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses)
     check(Look.Apply(mapper, ice_pass, cube_maps, camera, "color", "0.5,0.6,0.7") == "")
     check(mapper.GetIceColor() == (0.5, 0.6, 0.7))
 
@@ -98,6 +98,9 @@ def test_apply_refuses_bad_values_and_changes_nothing():
     check(mapper.GetRefractionRatio() == before)
     check("unknown setting" in Look.Apply(mapper, ice_pass, cube_maps, camera, "etta", "1"))
     check("one of" in Look.Apply(mapper, ice_pass, cube_maps, camera, "interior", "fast"))
+    # The single-pass interior is gone: its name is refused with the choices there are.
+    problem = Look.Apply(mapper, ice_pass, cube_maps, camera, "interior", "single-pass")
+    check("screen-space" in problem, problem)
     check(Look.Apply(None, ice_pass, cube_maps, camera, "eta", "0.7") != "", "no mapper")
     check(Look.GetValue(None, ice_pass, cube_maps, camera, "eta") == "")
 

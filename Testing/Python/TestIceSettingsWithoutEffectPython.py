@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 """A setting that cannot show says so, once: snow needs Glistening, absorption needs vtkIcePass
-(the back faces give the path in the ice), the milky core the single-pass interior. Where it
+(the back faces give the path in the ice), the milky core the screen-space interior. Where it
 shows, nothing is said."""
 import sys
 
@@ -57,7 +57,7 @@ def core_in_paper_passes(mapper):
     mapper.SetInteriorMethod(vtkice.vtkIceMapper.InteriorPaperPasses)
 
 
-def core_in_single_pass(mapper):
+def core_in_screen_space(mapper):
     mapper.SetMilkyCoreRadius(0.5)
 
 
@@ -83,11 +83,11 @@ def test_absorption_with_the_pass_says_nothing():
 
 def test_core_with_paper_passes_warns_once():
     text = warnings_of_one_render(core_in_paper_passes, with_pass=True)
-    check(text.count("shows nothing") == 1 and "InteriorSinglePass" in text, text)
+    check(text.count("shows nothing") == 1 and "InteriorScreenSpace" in text, text)
 
 
-def test_core_in_the_single_pass_says_nothing():
-    text = warnings_of_one_render(core_in_single_pass, with_pass=True)
+def test_core_in_screen_space_says_nothing():
+    text = warnings_of_one_render(core_in_screen_space, with_pass=True)
     check("nothing" not in text, text)
 
 

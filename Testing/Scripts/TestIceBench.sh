@@ -85,7 +85,7 @@ for r in data:
         problems.append("%s: coverage %.3f is not about 1/5" % (where, t["coverage"]))
     if r["material"] not in ("plain", "one-sided", "two-sided", "exit-point", "full-look"):
         problems.append("%s: material %r" % (where, r["material"]))
-    wanted = "" if r["material"] in ("plain", "one-sided") else ("single-pass", "paper-passes", "screen-space")
+    wanted = "" if r["material"] in ("plain", "one-sided") else ("paper-passes", "screen-space")
     if r["interior"] not in wanted or (not wanted and r["interior"]):
         problems.append("%s: interior %r" % (where, r["interior"]))
     if r["cube_map"] == "1":
@@ -110,13 +110,13 @@ for r in data:
             wanted.add("cube_map")
         if r["interior"] in ("paper-passes", "screen-space") and (cracks or air):
             wanted.add("interior")
-    no_interior = r["interior"] == "single-pass" or not (cracks or air)
+    no_interior = not (cracks or air)
     if not wanted <= timed or (not with_pass and timed) or (no_interior and "interior" in timed):
         problems.append("%s: GPU steps timed %s, wanted at least %s" % (where, sorted(timed), sorted(wanted)))
     if any(value and not (float(value) >= 0 and math.isfinite(float(value))) for value in gpu.values()):
         problems.append("%s: a GPU step time is not a finite number >= 0" % where)
 crack_counts = [(int(r["cracks"]), r["interior"]) for r in groups.get("cracks-teapot", [])[1:]]
-if crack_counts != [(n, m) for m in ("single-pass", "paper-passes", "screen-space") for n in (0, 2, 8)]:
+if crack_counts != [(n, m) for m in ("paper-passes", "screen-space") for n in (0, 2, 8)]:
     problems.append("cracks-teapot counts %r" % crack_counts)
 
 markdown = open("bench.md").read()

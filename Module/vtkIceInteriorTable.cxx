@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkIceSinglePassInterior.h"
+#include "vtkIceInteriorTable.h"
 
 #include "vtkIceAirGeometry.h"
 #include "vtkIceBackToFront.h"
@@ -133,20 +133,20 @@ std::vector<float> BumpGradients()
 }
 
 //------------------------------------------------------------------------------
-vtkIceSinglePassInterior::vtkIceSinglePassInterior() = default;
+vtkIceInteriorTable::vtkIceInteriorTable() = default;
 
 //------------------------------------------------------------------------------
-vtkIceSinglePassInterior::~vtkIceSinglePassInterior() = default;
+vtkIceInteriorTable::~vtkIceInteriorTable() = default;
 
 //------------------------------------------------------------------------------
-std::string vtkIceSinglePassInterior::Declarations()
+std::string vtkIceInteriorTable::Declarations()
 {
   return vtkIceInteriorLook::Defines() + vtkIceShaderSections::Get(vtkIceInteriorLookFS, "Dec") +
     vtkIceShaderSections::Get(vtkIceInteriorFS, "Dec");
 }
 
 //------------------------------------------------------------------------------
-std::string vtkIceSinglePassInterior::Functions(int lightComplexity, int lightCount)
+std::string vtkIceInteriorTable::Functions(int lightComplexity, int lightCount)
 {
   // VTK's light loop (vtkOpenGLPolyDataMapper): the headlight's specular is n.z in view space;
   // scene lights reflect about the normal. Positional lights shine from their position, without
@@ -177,13 +177,7 @@ std::string vtkIceSinglePassInterior::Functions(int lightComplexity, int lightCo
 }
 
 //------------------------------------------------------------------------------
-std::string vtkIceSinglePassInterior::Call()
-{
-  return vtkIceShaderSections::Get(vtkIceInteriorFS, "Call");
-}
-
-//------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
+void vtkIceInteriorTable::Place(vtkPolyData* ice, const Settings& settings)
 {
   const bool same = this->Placed && ice == this->PlacedFor && ice->GetMTime() == this->PlacedTime &&
     settings.Cracks == this->Current.Cracks && settings.CrackSeed == this->Current.CrackSeed &&
@@ -254,7 +248,7 @@ void vtkIceSinglePassInterior::Place(vtkPolyData* ice, const Settings& settings)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::Order(const double eye[3])
+void vtkIceInteriorTable::Order(const double eye[3])
 {
   // Back to front by the planes' centres, as vtkIceBackToFront orders the paper passes' planes.
   const std::vector<vtkIdType> order = vtkIceBackToFront::Order(this->AirCenters, eye);
@@ -266,7 +260,7 @@ void vtkIceSinglePassInterior::Order(const double eye[3])
 }
 
 //------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice,
+void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice,
   const Settings& settings, vtkTexture* atlas)
 {
   this->Place(ice, settings);
@@ -329,7 +323,7 @@ void vtkIceSinglePassInterior::Prepare(vtkRenderer* renderer, vtkActor* actor, v
 }
 
 //------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::SetUniforms(vtkShaderProgram* program)
+void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
 {
   if (!this->Table)
   {
@@ -365,7 +359,7 @@ void vtkIceSinglePassInterior::SetUniforms(vtkShaderProgram* program)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::Finish(vtkRenderer* renderer)
+void vtkIceInteriorTable::Finish(vtkRenderer* renderer)
 {
   if (this->ActiveAtlas)
   {
@@ -380,7 +374,7 @@ void vtkIceSinglePassInterior::Finish(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::ReleaseGraphicsResources(vtkWindow* window)
+void vtkIceInteriorTable::ReleaseGraphicsResources(vtkWindow* window)
 {
   if (this->Table)
   {
@@ -396,7 +390,7 @@ void vtkIceSinglePassInterior::ReleaseGraphicsResources(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceSinglePassInterior::GetCorners(int position, double corners[24]) const
+void vtkIceInteriorTable::GetCorners(int position, double corners[24]) const
 {
   const double* from = position < this->Current.Cracks
     ? &this->CrackCorners[24 * static_cast<size_t>(position)]

@@ -1,11 +1,11 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The single-pass interior of one vtkIceMapper (InteriorSinglePass): its cracks and air planes as
-// records in a float texture (placement and shape, the same as the paper passes' geometry), a
+// The interior of one vtkIceMapper as the screen-space step reads it: its cracks and air planes
+// as records in a float texture (placement and shape, the same as the paper passes' geometry), a
 // periodic noise-gradient texture for the cracks' bumps, and the shader code that intersects the
-// view ray with them in the ice's own fragment shader (glsl/vtkIceInteriorFS.glsl).
-#ifndef vtkIceSinglePassInterior_h
-#define vtkIceSinglePassInterior_h
+// view ray with them (glsl/vtkIceInteriorFS.glsl).
+#ifndef vtkIceInteriorTable_h
+#define vtkIceInteriorTable_h
 
 #include "vtkSmartPointer.h"
 
@@ -21,7 +21,7 @@ class vtkTexture;
 class vtkTextureObject;
 class vtkWindow;
 
-class vtkIceSinglePassInterior
+class vtkIceInteriorTable
 {
 public:
   struct Settings
@@ -41,22 +41,20 @@ public:
     double Bounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 }; // what cracks and air are placed in
   };
 
-  vtkIceSinglePassInterior();
-  ~vtkIceSinglePassInterior();
+  vtkIceInteriorTable();
+  ~vtkIceInteriorTable();
 
   // Declarations (after VTK's normal declarations) and functions (before main, after VTK's light
   // declarations, for VTK's light loop of this complexity and count).
   static std::string Declarations();
   static std::string Functions(int lightComplexity, int lightCount);
-  // The call at the surface shader's Interior hook.
-  static std::string Call();
 
   // Before a draw of `actor`: the records of `ice` (placed again only when it or a setting
   // changed), the planes back to front for the active camera, the textures uploaded and
   // activated. `atlas` is the bubble images (activated here too).
   void Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice, const Settings& settings,
     vtkTexture* atlas);
-  // The interior's own uniforms (vtkIceWorldSpaceMapper sets the matrices it reads).
+  // The interior's own uniforms (the screen-space step sets the matrices it reads).
   void SetUniforms(vtkShaderProgram* program);
   // After the draw: the textures deactivated.
   void Finish(vtkRenderer* renderer);
@@ -96,8 +94,8 @@ private:
   vtkSmartPointer<vtkTextureObject> Bump;
   vtkTexture* ActiveAtlas = nullptr;
 
-  vtkIceSinglePassInterior(const vtkIceSinglePassInterior&) = delete;
-  void operator=(const vtkIceSinglePassInterior&) = delete;
+  vtkIceInteriorTable(const vtkIceInteriorTable&) = delete;
+  void operator=(const vtkIceInteriorTable&) = delete;
 };
 
 #endif
