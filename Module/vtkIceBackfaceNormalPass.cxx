@@ -3,7 +3,6 @@
 #include "vtkIceBackfaceNormalPass.h"
 
 #include "vtkIceBackfaceNormalFS.h"
-#include "vtkIceInteriorDrawer.h"
 #include "vtkIceMapperAccess.h"
 #include "vtkIceScreenTarget.h"
 #include "vtkIceShaderSections.h"
@@ -58,7 +57,7 @@ void vtkIceBackfaceNormalPass::Render(const vtkRenderState* s)
     vtkProp* prop = s->GetPropArray()[i];
     if (vtkIceMapper* mapper = vtkIceMapperAccess::Of(prop))
     {
-      vtkIceInteriorDrawer::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), false);
+      mapper->DrawPaperCracks(renderer, static_cast<vtkActor*>(prop), false);
     }
   }
   this->PostRender(s);

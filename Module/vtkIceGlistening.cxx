@@ -3,6 +3,7 @@
 #include "vtkIceGlistening.h"
 
 #include "vtkIceGlisteningFS.h"
+#include "vtkIceProperty.h"
 #include "vtkIceShaderSections.h"
 
 #include "vtkShaderProgram.h"
@@ -52,12 +53,14 @@ std::string Code(int lightComplexity, int lightCount)
 }
 
 //------------------------------------------------------------------------------
-void SetUniforms(vtkShaderProgram* program, const Parameters& parameters)
+void SetUniforms(vtkShaderProgram* program, vtkIceProperty* look, int noiseTextureUnit)
 {
-  program->SetUniformi("iceGlisteningNoise", parameters.NoiseTextureUnit);
-  program->SetUniformf("iceGlisteningScale", static_cast<float>(parameters.Scale));
-  program->SetUniformf("iceGlisteningIntensity", static_cast<float>(parameters.Intensity));
-  program->SetUniformf("iceGlisteningAlignmentGain", static_cast<float>(parameters.AlignmentGain));
-  program->SetUniformf("iceSnowAmount", static_cast<float>(parameters.SnowAmount));
+  program->SetUniformi("iceGlisteningNoise", noiseTextureUnit);
+  program->SetUniformf("iceGlisteningScale", static_cast<float>(look->GetGlisteningScale()));
+  program->SetUniformf(
+    "iceGlisteningIntensity", static_cast<float>(look->GetGlisteningIntensity()));
+  program->SetUniformf(
+    "iceGlisteningAlignmentGain", static_cast<float>(look->GetGlisteningAlignmentGain()));
+  program->SetUniformf("iceSnowAmount", static_cast<float>(look->GetSnowAmount()));
 }
 }

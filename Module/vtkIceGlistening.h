@@ -8,6 +8,7 @@
 #include <string>
 
 class vtkActor;
+class vtkIceProperty;
 class vtkRenderer;
 class vtkShaderProgram;
 
@@ -22,17 +23,9 @@ std::string Declarations();
 // lightDirectionVC0, ...).
 std::string Code(int lightComplexity, int lightCount);
 
-struct Parameters
-{
-  double Scale = 0.03;
-  double Intensity = 1.0;
-  double AlignmentGain = 2.0;
-  double SnowAmount = 0.0;
-  int NoiseTextureUnit = 0;
-};
-
-// Sets the layer's uniforms (vtkIceWorldSpaceMapper sets the matrices it reads).
-void SetUniforms(vtkShaderProgram* program, const Parameters& parameters);
+// Sets the layer's uniforms from `look` and the noise texture's unit (vtkIceWorldSpaceMapper sets
+// the matrices it reads).
+void SetUniforms(vtkShaderProgram* program, vtkIceProperty* look, int noiseTextureUnit);
 }
 
 #endif

@@ -25,7 +25,7 @@ constexpr double CrackBumpStrength = 0.6;
 // Noise cells across the ice's extent on the crack sheets (their bump frequency times the extent).
 constexpr double CrackBumpCells = 8.0;
 
-// The milky core (vtkIceMapper::MilkyCoreRadius): the optical depth of a ray through its centre
+// The milky core (vtkIceProperty::MilkyCoreRadius): the optical depth of a ray through its centre
 // at Milkiness 1 (the core covers 1 - exp(-depth) of what is behind it), the colour its air
 // scatters and the share of the air planes' bubbles left at its rim.
 constexpr double CoreOpticalDepth = 4.0;

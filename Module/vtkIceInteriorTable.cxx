@@ -10,6 +10,7 @@
 #include "vtkIceInteriorLook.h"
 #include "vtkIceInteriorLookFS.h"
 #include "vtkIceNoise.h"
+#include "vtkIceProperty.h"
 #include "vtkIceShaderSections.h"
 
 #include "vtkActor.h"
@@ -177,44 +178,54 @@ std::string vtkIceInteriorTable::Functions(int lightComplexity, int lightCount)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceInteriorTable::Place(vtkPolyData* ice, const Settings& settings)
+void vtkIceInteriorTable::Place(vtkPolyData* ice, vtkIceProperty* look, const Placement& placement)
 {
+  // The debug views show the cracks alone or the air alone.
+  const int cracks = placement.Flat || placement.Debug == vtkIceInteriorLook::DebugAir
+    ? 0
+    : look->GetNumberOfCracks();
+  const int airPlanes =
+    placement.Debug == vtkIceInteriorLook::DebugCracks ? 0 : look->GetNumberOfAirPlanes();
   const bool same = this->Placed && ice == this->PlacedFor && ice->GetMTime() == this->PlacedTime &&
-    settings.Cracks == this->Current.Cracks && settings.CrackSeed == this->Current.CrackSeed &&
-    settings.AirPlanes == this->Current.AirPlanes && settings.AirSeed == this->Current.AirSeed &&
-    std::equal(settings.Bounds, settings.Bounds + 6, this->Current.Bounds);
-  this->Current = settings;
+    cracks == this->Cracks && look->GetCrackSeed() == this->CrackSeed &&
+    airPlanes == this->AirPlanes && look->GetAirSeed() == this->AirSeed &&
+    std::equal(placement.Bounds, placement.Bounds + 6, this->Where.Bounds);
+  this->Where = placement;
   if (same)
   {
     return;
   }
+  this->Cracks = cracks;
+  this->CrackSeed = look->GetCrackSeed();
+  this->AirPlanes = airPlanes;
+  this->AirSeed = look->GetAirSeed();
   this->Placed = true;
   this->PlacedFor = ice;
   this->PlacedTime = ice->GetMTime();
   this->Uploaded = false;
-  const double* bounds = settings.Bounds;
+  const double* bounds = placement.Bounds;
 
   // The three models' outlines and curvatures, as vtkIceCrackGeometry picks them.
   this->Outlines.assign(3 * OutlineSamples, 0.0f);
   vtkIceCrackSource::Shape shapes[3];
   for (int m = 0; m < 3; ++m)
   {
-    shapes[m] = vtkIceCrackSource::GetShape(vtkIceCrackGeometry::ModelSeed(settings.CrackSeed, m));
+    shapes[m] = vtkIceCrackSource::GetShape(vtkIceCrackGeometry::ModelSeed(this->CrackSeed, m));
     for (int a = 0; a < OutlineSamples; ++a)
     {
       this->Outlines[m * OutlineSamples + a] =
         static_cast<float>(shapes[m].OutlineRadius(2.0 * vtkMath::Pi() * a / OutlineSamples));
     }
   }
-  this->CrackRecords.assign(16 * static_cast<size_t>(settings.Cracks), 0.0f);
-  this->CrackCorners.assign(24 * static_cast<size_t>(settings.Cracks), 0.0);
-  this->AirCorners.assign(24 * static_cast<size_t>(settings.AirPlanes), 0.0);
-  for (int i = 0; i < settings.Cracks; ++i)
+  this->CrackRecords.assign(16 * static_cast<size_t>(this->Cracks), 0.0f);
+  this->CrackCorners.assign(24 * static_cast<size_t>(this->Cracks), 0.0);
+  this->AirCorners.assign(24 * static_cast<size_t>(this->AirPlanes), 0.0);
+  for (int i = 0; i < this->Cracks; ++i)
   {
-    vtkNew<vtkTransform> placement;
-    vtkIceCrackGeometry::Placement(settings.CrackSeed, i, bounds, placement);
+    vtkNew<vtkTransform> where;
+    vtkIceCrackGeometry::Placement(this->CrackSeed, i, bounds, where);
     float* record = &this->CrackRecords[16 * static_cast<size_t>(i)];
-    StoreInverse(placement, record);
+    StoreInverse(where, record);
     const vtkIceCrackSource::Shape& shape = shapes[i % 3];
     record[12] = static_cast<float>(shape.Bowl + shape.Saddle);
     record[13] = static_cast<float>(shape.Bowl - shape.Saddle);
@@ -226,23 +237,23 @@ void vtkIceInteriorTable::Place(vtkPolyData* ice, const Settings& settings)
     const double b = record[13] * r * r;
     const double z[2] = { std::min(0.0, a) + std::min(0.0, b),
       std::max(0.0, a) + std::max(0.0, b) };
-    StoreCorners(placement, r, z, &this->CrackCorners[24 * static_cast<size_t>(i)]);
+    StoreCorners(where, r, z, &this->CrackCorners[24 * static_cast<size_t>(i)]);
   }
-  this->AirRecords.assign(16 * static_cast<size_t>(settings.AirPlanes), 0.0f);
-  this->AirCenters.assign(3 * static_cast<size_t>(settings.AirPlanes), 0.0);
-  for (int i = 0; i < settings.AirPlanes; ++i)
+  this->AirRecords.assign(16 * static_cast<size_t>(this->AirPlanes), 0.0f);
+  this->AirCenters.assign(3 * static_cast<size_t>(this->AirPlanes), 0.0);
+  for (int i = 0; i < this->AirPlanes; ++i)
   {
-    vtkNew<vtkTransform> placement;
-    vtkIceAirGeometry::Placement(settings.AirSeed, i, bounds, placement);
+    vtkNew<vtkTransform> where;
+    vtkIceAirGeometry::Placement(this->AirSeed, i, bounds, where);
     float* record = &this->AirRecords[16 * static_cast<size_t>(i)];
-    StoreInverse(placement, record);
+    StoreInverse(where, record);
     double tile[2];
     vtkIceAirGeometry::Tile(i, tile);
     record[12] = static_cast<float>(tile[0]);
     record[13] = static_cast<float>(tile[1]);
-    placement->GetPosition(&this->AirCenters[3 * static_cast<size_t>(i)]);
+    where->GetPosition(&this->AirCenters[3 * static_cast<size_t>(i)]);
     const double flat[2] = { 0.0, 0.0 };
-    StoreCorners(placement, 1.0, flat, &this->AirCorners[24 * static_cast<size_t>(i)]);
+    StoreCorners(where, 1.0, flat, &this->AirCorners[24 * static_cast<size_t>(i)]);
   }
   this->AirOrder.clear();
 }
@@ -261,9 +272,10 @@ void vtkIceInteriorTable::Order(const double eye[3])
 
 //------------------------------------------------------------------------------
 void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice,
-  const Settings& settings, vtkTexture* atlas)
+  vtkIceProperty* look, const Placement& placement, vtkTexture* atlas)
 {
-  this->Place(ice, settings);
+  this->Place(ice, look, placement);
+  this->Look = look;
   double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
   renderer->GetActiveCamera()->GetPosition(eye);
   vtkNew<vtkMatrix4x4> worldToModel;
@@ -283,7 +295,7 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
   if (!this->Uploaded)
   {
     // Rows 0-2: the outlines (R); then the records, cracks first, planes back to front.
-    const int records = this->Current.Cracks + this->Current.AirPlanes;
+    const int records = this->Cracks + this->AirPlanes;
     const int rows = 3 + std::max(1, (records + RecordsPerRow - 1) / RecordsPerRow);
     std::vector<float> texels(static_cast<size_t>(4 * OutlineSamples) * rows, 0.0f);
     for (size_t i = 0; i < this->Outlines.size(); ++i)
@@ -315,7 +327,7 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
   }
   this->Table->Activate();
   this->Bump->Activate();
-  this->ActiveAtlas = settings.AirPlanes > 0 ? atlas : nullptr;
+  this->ActiveAtlas = this->AirPlanes > 0 ? atlas : nullptr;
   if (this->ActiveAtlas)
   {
     this->ActiveAtlas->Render(renderer);
@@ -325,7 +337,7 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
 //------------------------------------------------------------------------------
 void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
 {
-  if (!this->Table)
+  if (!this->Table || !this->Look)
   {
     return;
   }
@@ -337,30 +349,39 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
     this->ActiveAtlas
       ? static_cast<vtkOpenGLTexture*>(this->ActiveAtlas)->GetTextureObject()->GetTextureUnit()
       : this->Table->GetTextureUnit());
-  program->SetUniformi("iceCrackCount", this->Current.Cracks);
-  program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->Current.AirPlanes : 0);
-  program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Current.CrackIntensity));
-  program->SetUniformf("iceCrackReflection", static_cast<float>(this->Current.CrackReflection));
+  program->SetUniformi("iceCrackCount", this->Cracks);
+  program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->AirPlanes : 0);
+  program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Look->GetCrackIntensity()));
+  program->SetUniformf("iceCrackReflection", static_cast<float>(this->Look->GetCrackReflection()));
   program->SetUniformf(
     "iceCrackBumpStrength", static_cast<float>(vtkIceInteriorLook::CrackBumpStrength));
-  program->SetUniformf(
-    "iceCrackBumpFrequency", static_cast<float>(this->Current.CrackBumpFrequency));
-  program->SetUniformf("iceMilkiness", static_cast<float>(this->Current.Milkiness));
-  program->SetUniformi("iceInteriorDebug", this->Current.Debug);
-  const float coreCenter[3] = { static_cast<float>(this->Current.CoreCenter[0]),
-    static_cast<float>(this->Current.CoreCenter[1]),
-    static_cast<float>(this->Current.CoreCenter[2]) };
-  const float coreScale[3] = { static_cast<float>(this->Current.CoreScale[0]),
-    static_cast<float>(this->Current.CoreScale[1]),
-    static_cast<float>(this->Current.CoreScale[2]) };
+  program->SetUniformf("iceCrackBumpFrequency",
+    static_cast<float>(vtkIceInteriorLook::CrackBumpFrequency(this->Where.Extent)));
+  program->SetUniformf("iceMilkiness", static_cast<float>(this->Look->GetMilkiness()));
+  program->SetUniformi("iceInteriorDebug", this->Where.Debug);
+  // The milky core: its frame in the placement box, its density from the milkiness.
+  double center[3] = { 0.0, 0.0, 0.0 };
+  double scale[3] = { 1.0, 1.0, 1.0 };
+  double density = 0.0;
+  if (this->Look->HasMilkyCore())
+  {
+    density = vtkIceInteriorLook::CoreDensity(this->Look->GetMilkiness());
+    vtkIceInteriorLook::CoreFrame(
+      this->Where.Bounds, this->Look->GetMilkyCoreRadius(), center, scale);
+  }
+  const float coreCenter[3] = { static_cast<float>(center[0]), static_cast<float>(center[1]),
+    static_cast<float>(center[2]) };
+  const float coreScale[3] = { static_cast<float>(scale[0]), static_cast<float>(scale[1]),
+    static_cast<float>(scale[2]) };
   program->SetUniform3f("iceCoreCenter", coreCenter);
   program->SetUniform3f("iceCoreScale", coreScale);
-  program->SetUniformf("iceCoreDensity", static_cast<float>(this->Current.CoreDensity));
+  program->SetUniformf("iceCoreDensity", static_cast<float>(density));
 }
 
 //------------------------------------------------------------------------------
 void vtkIceInteriorTable::Finish(vtkRenderer* renderer)
 {
+  this->Look = nullptr;
   if (this->ActiveAtlas)
   {
     this->ActiveAtlas->PostRender(renderer);
@@ -392,8 +413,8 @@ void vtkIceInteriorTable::ReleaseGraphicsResources(vtkWindow* window)
 //------------------------------------------------------------------------------
 void vtkIceInteriorTable::GetCorners(int position, double corners[24]) const
 {
-  const double* from = position < this->Current.Cracks
+  const double* from = position < this->Cracks
     ? &this->CrackCorners[24 * static_cast<size_t>(position)]
-    : &this->AirCorners[24 * static_cast<size_t>(this->AirOrder[position - this->Current.Cracks])];
+    : &this->AirCorners[24 * static_cast<size_t>(this->AirOrder[position - this->Cracks])];
   std::copy(from, from + 24, corners);
 }

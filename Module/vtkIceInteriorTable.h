@@ -13,6 +13,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkIceProperty;
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkRenderer;
@@ -24,21 +25,16 @@ class vtkWindow;
 class vtkIceInteriorTable
 {
 public:
-  struct Settings
+  // What the drawing decides beside the look (the vtkIceProperty the table reads): the box the
+  // cracks and air are placed in, the model's largest extent (the cracks' bump scale), the debug
+  // view (vtkIceInteriorLook::Debug: the cracks alone, or the air alone) and whether the input is
+  // flat (no inside: no cracks).
+  struct Placement
   {
-    int Cracks = 0;
-    int CrackSeed = 1;
-    double CrackIntensity = 1.0;
-    double CrackReflection = 0.0;    // the cracks as sheets (vtkIceMapper::CrackReflection)
-    double CrackBumpFrequency = 1.0; // noise cells per model unit
-    int AirPlanes = 0;
-    int AirSeed = 1;
-    double Milkiness = 0.5;
-    double CoreDensity = 0.0; // 0: no milky core
-    double CoreCenter[3] = { 0.0, 0.0, 0.0 };
-    double CoreScale[3] = { 1.0, 1.0, 1.0 };             // model to the core's frame
-    int Debug = 0;                                       // vtkIceInteriorLook::Debug
-    double Bounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 }; // what cracks and air are placed in
+    double Bounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 1.0 };
+    double Extent = 1.0;
+    int Debug = 0;
+    bool Flat = false;
   };
 
   vtkIceInteriorTable();
@@ -49,11 +45,12 @@ public:
   static std::string Declarations();
   static std::string Functions(int lightComplexity, int lightCount);
 
-  // Before a draw of `actor`: the records of `ice` (placed again only when it or a setting
-  // changed), the planes back to front for the active camera, the textures uploaded and
-  // activated. `atlas` is the bubble images (activated here too).
-  void Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice, const Settings& settings,
-    vtkTexture* atlas);
+  // Before a draw of `actor`: the records of `ice` with the cracks and air of `look` (placed
+  // again only when the input, a count, a seed or the placement changed), the planes back to front
+  // for the active camera, the textures uploaded and activated. `atlas` is the bubble images
+  // (activated here too). `look` is read until Finish.
+  void Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice, vtkIceProperty* look,
+    const Placement& placement, vtkTexture* atlas);
   // The interior's own uniforms (the screen-space step sets the matrices it reads).
   void SetUniforms(vtkShaderProgram* program);
   // After the draw: the textures deactivated.
@@ -62,23 +59,25 @@ public:
 
   // The records in the table's order (cracks, then air planes back to front) since the last
   // Prepare, and the model-space box around record `position`'s sheet or plane (8 corners).
-  int GetNumberOfCracks() const { return this->Current.Cracks; }
+  int GetNumberOfCracks() const { return this->Cracks; }
   // The air planes the shader reads (none without the bubble atlas), between Prepare and Finish.
   int GetNumberOfAirPlanes() const
   {
     return this->ActiveAtlas ? static_cast<int>(this->AirOrder.size()) : 0;
   }
-  int GetNumberOfRecords() const
-  {
-    return this->Current.Cracks + static_cast<int>(this->AirOrder.size());
-  }
+  int GetNumberOfRecords() const { return this->Cracks + static_cast<int>(this->AirOrder.size()); }
   void GetCorners(int position, double corners[24]) const;
 
 private:
-  void Place(vtkPolyData* ice, const Settings& settings);
+  void Place(vtkPolyData* ice, vtkIceProperty* look, const Placement& placement);
   void Order(const double eye[3]);
 
-  Settings Current;
+  Placement Where;
+  vtkIceProperty* Look = nullptr; // between Prepare and Finish
+  int Cracks = 0;                 // placed
+  int CrackSeed = 1;
+  int AirPlanes = 0;
+  int AirSeed = 1;
   vtkPolyData* PlacedFor = nullptr;
   vtkMTimeType PlacedTime = 0;
   bool Placed = false;

@@ -488,62 +488,7 @@ void vtkIceMapper::SetIceShaderParameters(
     {
       this->DrawTextures.push_back(noise);
     }
-    vtkIceGlistening::Parameters parameters;
-    parameters.Scale = this->IceProperty->GetGlisteningScale();
-    parameters.Intensity = this->IceProperty->GetGlisteningIntensity();
-    parameters.AlignmentGain = this->IceProperty->GetGlisteningAlignmentGain();
-    parameters.SnowAmount = this->IceProperty->GetSnowAmount();
-    parameters.NoiseTextureUnit = noise->GetTextureUnit();
-    vtkIceGlistening::SetUniforms(program, parameters);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program)
-{
-  if (!this->InteriorPrepared)
-  {
-    vtkIceInteriorTable::Settings settings;
-    settings.Cracks = this->InputFlat ? 0 : this->IceProperty->GetNumberOfCracks();
-    settings.CrackSeed = this->IceProperty->GetCrackSeed();
-    settings.CrackIntensity = this->IceProperty->GetCrackIntensity();
-    settings.CrackReflection = this->IceProperty->GetCrackReflection();
-    settings.CrackBumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
-    this->GetLookBounds(settings.Bounds);
-    settings.AirPlanes = this->IceProperty->GetNumberOfAirPlanes();
-    settings.AirSeed = this->IceProperty->GetAirSeed();
-    settings.Milkiness = this->IceProperty->GetMilkiness();
-    if (this->IceProperty->HasMilkyCore())
-    {
-      settings.CoreDensity = vtkIceInteriorLook::CoreDensity(this->IceProperty->GetMilkiness());
-      vtkIceInteriorLook::CoreFrame(settings.Bounds, this->IceProperty->GetMilkyCoreRadius(),
-        settings.CoreCenter, settings.CoreScale);
-    }
-    settings.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
-      : this->DebugView == DebugAir                        ? vtkIceInteriorLook::DebugAir
-                                                           : vtkIceInteriorLook::DebugNone;
-    if (this->DebugView == DebugCracksClipped)
-    {
-      settings.AirPlanes = 0;
-    }
-    else if (this->DebugView == DebugAir)
-    {
-      settings.Cracks = 0;
-    }
-    this->InteriorTable->Prepare(ren, act, this->PreparedInput, settings,
-      this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
-    this->InteriorPrepared = true;
-  }
-  this->InteriorTable->SetUniforms(program);
-}
-
-//------------------------------------------------------------------------------
-void vtkIceMapper::FinishInterior(vtkRenderer* ren)
-{
-  if (this->InteriorPrepared)
-  {
-    this->InteriorTable->Finish(ren);
-    this->InteriorPrepared = false;
+    vtkIceGlistening::SetUniforms(program, this->IceProperty, noise->GetTextureUnit());
   }
 }
 

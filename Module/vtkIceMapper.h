@@ -26,8 +26,9 @@
  * look); set them to 0 for clean optics.
  *
  * The look's parameters (optics, cracks, air, bumps, glistening) are on the mapper's
- * vtkIceProperty (GetIceProperty, SetIceProperty to share one between mappers); the mapper's
- * setters of those names set them there. How the ice is drawn is set on the mapper.
+ * vtkIceProperty, as a vtkActor's are on its vtkProperty: mapper->GetIceProperty()->
+ * SetNumberOfCracks(4); SetIceProperty shares one between mappers. How the ice is drawn
+ * (two-sided refraction, the interior method, crack clipping, debug views) is set on the mapper.
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn. Flat
@@ -39,7 +40,7 @@
 #define vtkIceMapper_h
 
 #include "RenderingIceModule.h" // for export macro
-#include "vtkIceProperty.h"     // for the forwarded parameters
+#include "vtkIceProperty.h"     // for GetIceProperty
 #include "vtkIceWorldSpaceMapper.h"
 
 #include <map>    // for members
@@ -77,187 +78,6 @@ public:
    * The mapper's modification time, its ice property's included.
    */
   vtkMTimeType GetMTime() override;
-
-  ///@{
-  /**
-   * The ice property's parameters, set and read on GetIceProperty(): see vtkIceProperty for
-   * their meanings, defaults and ranges. Look parameters added later are on vtkIceProperty only.
-   */
-  void SetIndexOfRefraction(double value) { this->GetIceProperty()->SetIndexOfRefraction(value); }
-  double GetIndexOfRefraction() { return this->GetIceProperty()->GetIndexOfRefraction(); }
-  double GetIndexOfRefractionMinValue()
-  {
-    return this->GetIceProperty()->GetIndexOfRefractionMinValue();
-  }
-  double GetIndexOfRefractionMaxValue()
-  {
-    return this->GetIceProperty()->GetIndexOfRefractionMaxValue();
-  }
-  void SetRefractionRatio(double value) { this->GetIceProperty()->SetRefractionRatio(value); }
-  double GetRefractionRatio() { return this->GetIceProperty()->GetRefractionRatio(); }
-  double GetRefractionRatioMinValue()
-  {
-    return this->GetIceProperty()->GetRefractionRatioMinValue();
-  }
-  double GetRefractionRatioMaxValue()
-  {
-    return this->GetIceProperty()->GetRefractionRatioMaxValue();
-  }
-  void SetAttenuationColor(double red, double green, double blue)
-  {
-    this->GetIceProperty()->SetAttenuationColor(red, green, blue);
-  }
-  void SetAttenuationColor(const double color[3])
-  {
-    this->GetIceProperty()->SetAttenuationColor(color);
-  }
-  double* GetAttenuationColor() VTK_SIZEHINT(3)
-  {
-    return this->GetIceProperty()->GetAttenuationColor();
-  }
-  void GetAttenuationColor(double color[3]) { this->GetIceProperty()->GetAttenuationColor(color); }
-  void SetAttenuationDistance(double value)
-  {
-    this->GetIceProperty()->SetAttenuationDistance(value);
-  }
-  double GetAttenuationDistance() { return this->GetIceProperty()->GetAttenuationDistance(); }
-  double GetAttenuationDistanceMinValue()
-  {
-    return this->GetIceProperty()->GetAttenuationDistanceMinValue();
-  }
-  double GetAttenuationDistanceMaxValue()
-  {
-    return this->GetIceProperty()->GetAttenuationDistanceMaxValue();
-  }
-  void SetFresnelPower(double value) { this->GetIceProperty()->SetFresnelPower(value); }
-  double GetFresnelPower() { return this->GetIceProperty()->GetFresnelPower(); }
-  double GetFresnelPowerMinValue() { return this->GetIceProperty()->GetFresnelPowerMinValue(); }
-  double GetFresnelPowerMaxValue() { return this->GetIceProperty()->GetFresnelPowerMaxValue(); }
-  void SetBackNormalWeight(double value) { this->GetIceProperty()->SetBackNormalWeight(value); }
-  double GetBackNormalWeight() { return this->GetIceProperty()->GetBackNormalWeight(); }
-  double GetBackNormalWeightMinValue()
-  {
-    return this->GetIceProperty()->GetBackNormalWeightMinValue();
-  }
-  double GetBackNormalWeightMaxValue()
-  {
-    return this->GetIceProperty()->GetBackNormalWeightMaxValue();
-  }
-  void SetIceColor(double red, double green, double blue)
-  {
-    this->GetIceProperty()->SetIceColor(red, green, blue);
-  }
-  void SetIceColor(const double color[3]) { this->GetIceProperty()->SetIceColor(color); }
-  double* GetIceColor() VTK_SIZEHINT(3) { return this->GetIceProperty()->GetIceColor(); }
-  void GetIceColor(double color[3]) { this->GetIceProperty()->GetIceColor(color); }
-  void SetRoughness(double value) { this->GetIceProperty()->SetRoughness(value); }
-  double GetRoughness() { return this->GetIceProperty()->GetRoughness(); }
-  double GetRoughnessMinValue() { return this->GetIceProperty()->GetRoughnessMinValue(); }
-  double GetRoughnessMaxValue() { return this->GetIceProperty()->GetRoughnessMaxValue(); }
-  void SetNumberOfCracks(int value) { this->GetIceProperty()->SetNumberOfCracks(value); }
-  int GetNumberOfCracks() { return this->GetIceProperty()->GetNumberOfCracks(); }
-  int GetNumberOfCracksMinValue() { return this->GetIceProperty()->GetNumberOfCracksMinValue(); }
-  int GetNumberOfCracksMaxValue() { return this->GetIceProperty()->GetNumberOfCracksMaxValue(); }
-  void SetCrackSeed(int value) { this->GetIceProperty()->SetCrackSeed(value); }
-  int GetCrackSeed() { return this->GetIceProperty()->GetCrackSeed(); }
-  void SetCrackIntensity(double value) { this->GetIceProperty()->SetCrackIntensity(value); }
-  double GetCrackIntensity() { return this->GetIceProperty()->GetCrackIntensity(); }
-  double GetCrackIntensityMinValue() { return this->GetIceProperty()->GetCrackIntensityMinValue(); }
-  double GetCrackIntensityMaxValue() { return this->GetIceProperty()->GetCrackIntensityMaxValue(); }
-  void SetCrackReflection(double value) { this->GetIceProperty()->SetCrackReflection(value); }
-  double GetCrackReflection() { return this->GetIceProperty()->GetCrackReflection(); }
-  double GetCrackReflectionMinValue()
-  {
-    return this->GetIceProperty()->GetCrackReflectionMinValue();
-  }
-  double GetCrackReflectionMaxValue()
-  {
-    return this->GetIceProperty()->GetCrackReflectionMaxValue();
-  }
-  void SetNumberOfAirPlanes(int value) { this->GetIceProperty()->SetNumberOfAirPlanes(value); }
-  int GetNumberOfAirPlanes() { return this->GetIceProperty()->GetNumberOfAirPlanes(); }
-  int GetNumberOfAirPlanesMinValue()
-  {
-    return this->GetIceProperty()->GetNumberOfAirPlanesMinValue();
-  }
-  int GetNumberOfAirPlanesMaxValue()
-  {
-    return this->GetIceProperty()->GetNumberOfAirPlanesMaxValue();
-  }
-  void SetAirSeed(int value) { this->GetIceProperty()->SetAirSeed(value); }
-  int GetAirSeed() { return this->GetIceProperty()->GetAirSeed(); }
-  void SetMilkiness(double value) { this->GetIceProperty()->SetMilkiness(value); }
-  double GetMilkiness() { return this->GetIceProperty()->GetMilkiness(); }
-  double GetMilkinessMinValue() { return this->GetIceProperty()->GetMilkinessMinValue(); }
-  double GetMilkinessMaxValue() { return this->GetIceProperty()->GetMilkinessMaxValue(); }
-  void SetMilkyCoreRadius(double value) { this->GetIceProperty()->SetMilkyCoreRadius(value); }
-  double GetMilkyCoreRadius() { return this->GetIceProperty()->GetMilkyCoreRadius(); }
-  double GetMilkyCoreRadiusMinValue()
-  {
-    return this->GetIceProperty()->GetMilkyCoreRadiusMinValue();
-  }
-  double GetMilkyCoreRadiusMaxValue()
-  {
-    return this->GetIceProperty()->GetMilkyCoreRadiusMaxValue();
-  }
-  void SetBumpStrength(double value) { this->GetIceProperty()->SetBumpStrength(value); }
-  double GetBumpStrength() { return this->GetIceProperty()->GetBumpStrength(); }
-  double GetBumpStrengthMinValue() { return this->GetIceProperty()->GetBumpStrengthMinValue(); }
-  double GetBumpStrengthMaxValue() { return this->GetIceProperty()->GetBumpStrengthMaxValue(); }
-  void SetBumpScale(double value) { this->GetIceProperty()->SetBumpScale(value); }
-  double GetBumpScale() { return this->GetIceProperty()->GetBumpScale(); }
-  double GetBumpScaleMinValue() { return this->GetIceProperty()->GetBumpScaleMinValue(); }
-  double GetBumpScaleMaxValue() { return this->GetIceProperty()->GetBumpScaleMaxValue(); }
-  void SetNormalMap(vtkTexture* texture) { this->GetIceProperty()->SetNormalMap(texture); }
-  vtkTexture* GetNormalMap() { return this->GetIceProperty()->GetNormalMap(); }
-  void SetGlistening(bool value) { this->GetIceProperty()->SetGlistening(value); }
-  bool GetGlistening() { return this->GetIceProperty()->GetGlistening(); }
-  void GlisteningOn() { this->GetIceProperty()->GlisteningOn(); }
-  void GlisteningOff() { this->GetIceProperty()->GlisteningOff(); }
-  void SetGlisteningScale(double value) { this->GetIceProperty()->SetGlisteningScale(value); }
-  double GetGlisteningScale() { return this->GetIceProperty()->GetGlisteningScale(); }
-  double GetGlisteningScaleMinValue()
-  {
-    return this->GetIceProperty()->GetGlisteningScaleMinValue();
-  }
-  double GetGlisteningScaleMaxValue()
-  {
-    return this->GetIceProperty()->GetGlisteningScaleMaxValue();
-  }
-  void SetGlisteningIntensity(double value)
-  {
-    this->GetIceProperty()->SetGlisteningIntensity(value);
-  }
-  double GetGlisteningIntensity() { return this->GetIceProperty()->GetGlisteningIntensity(); }
-  double GetGlisteningIntensityMinValue()
-  {
-    return this->GetIceProperty()->GetGlisteningIntensityMinValue();
-  }
-  double GetGlisteningIntensityMaxValue()
-  {
-    return this->GetIceProperty()->GetGlisteningIntensityMaxValue();
-  }
-  void SetGlisteningAlignmentGain(double value)
-  {
-    this->GetIceProperty()->SetGlisteningAlignmentGain(value);
-  }
-  double GetGlisteningAlignmentGain()
-  {
-    return this->GetIceProperty()->GetGlisteningAlignmentGain();
-  }
-  double GetGlisteningAlignmentGainMinValue()
-  {
-    return this->GetIceProperty()->GetGlisteningAlignmentGainMinValue();
-  }
-  double GetGlisteningAlignmentGainMaxValue()
-  {
-    return this->GetIceProperty()->GetGlisteningAlignmentGainMaxValue();
-  }
-  void SetSnowAmount(double value) { this->GetIceProperty()->SetSnowAmount(value); }
-  double GetSnowAmount() { return this->GetIceProperty()->GetSnowAmount(); }
-  double GetSnowAmountMinValue() { return this->GetIceProperty()->GetSnowAmountMinValue(); }
-  double GetSnowAmountMaxValue() { return this->GetIceProperty()->GetSnowAmountMaxValue(); }
-  ///@}
 
   ///@{
   /**
@@ -432,18 +252,38 @@ public:
   bool HasOpaqueGeometry() override { return true; }
   bool HasTranslucentPolygonalGeometry() override { return false; }
 
+#ifndef __VTK_WRAP__
+  ///@{
+  /**
+   * For vtkIcePass and its sub-passes, inside a frame; not for applications. What this ice needs
+   * the pass to render for it (vtkIceFrame::Need bits), and what the frame drawing `prop` gives
+   * its surface program now (vtkIceFrame::Input bits).
+   */
+  int GetFrameNeeds();
+  int GetFrameInputs(vtkProp* prop);
+  ///@}
+
+  ///@{
+  /**
+   * For vtkIcePass and its sub-passes: the paper's passes' cracks of `actor` (`overlay`: over the
+   * rendered scene, added; otherwise with the current state, into the back-face normals for
+   * CracksPerturbRefraction) and air planes (over the scene, back to front), each drawn only when
+   * the mapper's settings ask for it; and the screen-space interior's table, textures,
+   * environment and look readied for its `program` until EndScreenInterior (returns the records
+   * readied, or null, with nothing to end, when there is no input to draw).
+   */
+  void DrawPaperCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
+  void DrawPaperAir(vtkRenderer* ren, vtkActor* actor);
+  const vtkIceInteriorTable* BeginScreenInterior(
+    vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program);
+  void EndScreenInterior(vtkRenderer* ren);
+  ///@}
+#endif
+
 protected:
   vtkIceMapper();
   ~vtkIceMapper() override;
 
-  // What vtkIcePass asks of the mapper in a frame (vtkIceMapperAccess, inside the module): what
-  // this ice needs rendered for it (vtkIceFrame::Need bits) and what the frame gives its program;
-  // its cracks and air are drawn by vtkIceInteriorDrawer from its state.
-  friend class vtkIceMapperAccess;
-  friend class vtkIceInteriorDrawer;
-  int GetFrameNeeds();
-  // What the frame drawing `prop` gives its surface program now (vtkIceFrame::Input bits).
-  int GetFrameInputs(vtkProp* prop);
   int ActiveFrameInputs = 0; // during a draw
 
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
@@ -473,7 +313,7 @@ protected:
   bool HasInterior() const;
   bool UsesScreenInterior() const;
   // The screen step's interior: its table and textures ready for a draw of `act` (until
-  // FinishInterior), its uniforms set on `program`.
+  // FinishInterior), its uniforms set on `program` (vtkIceMapperInterior.cxx).
   void PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program);
   void FinishInterior(vtkRenderer* ren);
   // The environment the ice samples in a draw of `act` (a dynamic cube map is bound by the

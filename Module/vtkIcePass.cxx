@@ -7,7 +7,6 @@
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceFrame.h"
 #include "vtkIceMapper.h"
-#include "vtkIceInteriorDrawer.h"
 #include "vtkIceMapperAccess.h"
 #include "vtkIceRenderPasses.h"
 #include "vtkIceOpaqueStep.h"
@@ -178,7 +177,7 @@ void vtkIcePass::Render(const vtkRenderState* s)
     if (vtkIceMapper* mapper = vtkIceMapperAccess::Of(s->GetPropArray()[i]))
     {
       iceProps.push_back(s->GetPropArray()[i]);
-      needs |= vtkIceMapperAccess::FrameNeeds(mapper);
+      needs |= mapper->GetFrameNeeds();
     }
   }
   this->NumberOfIceProps = static_cast<int>(iceProps.size());
@@ -265,8 +264,7 @@ void vtkIcePass::RenderScreenInterior(const vtkRenderState* iceState)
   for (int i = 0; i < iceState->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = iceState->GetPropArray()[i];
-    if (vtkIceMapperAccess::FrameNeeds(vtkIceMapperAccess::Of(prop)) &
-      vtkIceFrame::NeedsScreenInterior)
+    if (vtkIceMapperAccess::Of(prop)->GetFrameNeeds() & vtkIceFrame::NeedsScreenInterior)
     {
       props.push_back(prop);
     }
@@ -356,7 +354,7 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
   {
     vtkProp* prop = iceState->GetPropArray()[i];
     vtkIceMapper* mapper = vtkIceMapperAccess::Of(prop);
-    if (!(vtkIceMapperAccess::FrameNeeds(mapper) & vtkIceFrame::NeedsDepthIntervalForInterior))
+    if (!(mapper->GetFrameNeeds() & vtkIceFrame::NeedsDepthIntervalForInterior))
     {
       continue;
     }
@@ -365,9 +363,9 @@ void vtkIcePass::RenderOverlays(const vtkRenderState* s, const vtkRenderState* i
     propState.SetFrameBuffer(s->GetFrameBuffer());
     this->RenderDepthInterval(&propState);
     scissorToIce(prop, false);
-    vtkIceInteriorDrawer::DrawAir(mapper, renderer, static_cast<vtkActor*>(prop));
+    mapper->DrawPaperAir(renderer, static_cast<vtkActor*>(prop));
     scissorToIce(prop, mapper->GetDebugView() == vtkIceMapper::DebugCracksUnclipped);
-    vtkIceInteriorDrawer::DrawCracks(mapper, renderer, static_cast<vtkActor*>(prop), true);
+    mapper->DrawPaperCracks(renderer, static_cast<vtkActor*>(prop), true);
   }
   if (interior)
   {
@@ -425,7 +423,7 @@ bool vtkIcePass::PostReplaceShaderValues(
   if (mapper)
   {
     vtkIceShaderSections::FillHook(
-      fs, "FrameInputs", vtkIceFrame::Defines(vtkIceMapperAccess::FrameInputs(mapper, prop)));
+      fs, "FrameInputs", vtkIceFrame::Defines(mapper->GetFrameInputs(prop)));
   }
   return true;
 }

@@ -2,11 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIceProperty.h"
 
-#include "vtkIcePropertyUniforms.h"
-#include "vtkIcePrefilteredEnvironment.h"
-
 #include "vtkObjectFactory.h"
-#include "vtkShaderProgram.h"
 #include "vtkTexture.h"
 
 #include <algorithm>
@@ -55,13 +51,6 @@ bool SetColor(vtkObject* self, const char* name, const double color[3], double m
     changed = SetClamped(self, name, color[i], 0.0, 1.0, member[i]) || changed;
   }
   return changed;
-}
-
-void SetUniform3(vtkShaderProgram* program, const char* name, const double value[3])
-{
-  const float v[3] = { static_cast<float>(value[0]), static_cast<float>(value[1]),
-    static_cast<float>(value[2]) };
-  program->SetUniform3f(name, v);
 }
 }
 
@@ -210,28 +199,24 @@ void vtkIceProperty::DeepCopy(vtkIceProperty* other)
 }
 
 //------------------------------------------------------------------------------
-void vtkIcePropertyUniforms::Set(vtkIceProperty* property, vtkShaderProgram* program)
+std::vector<vtkIceProperty::ShaderValue> vtkIceProperty::GetShaderValues() const
 {
-  SetUniform3(program, "iceTint", property->IceColor);
-  program->SetUniformf("iceRefractionRatio", static_cast<float>(property->RefractionRatio));
-  SetUniform3(program, "iceAttenuationColor", property->AttenuationColor);
-  program->SetUniformf(
-    "iceInverseAttenuationDistance", static_cast<float>(1.0 / property->AttenuationDistance));
-  program->SetUniformf("iceFresnelPower", static_cast<float>(property->FresnelPower));
-  // The parts that are in some programs only.
-  if (program->IsUniformUsed("iceBackNormalWeight"))
-  {
-    program->SetUniformf("iceBackNormalWeight", static_cast<float>(property->BackNormalWeight));
-  }
-  if (program->IsUniformUsed("iceBumpStrength"))
-  {
-    program->SetUniformf("iceBumpStrength", static_cast<float>(property->BumpStrength));
-  }
-  if (program->IsUniformUsed("iceRoughnessLevel"))
-  {
-    program->SetUniformf("iceRoughnessLevel",
-      static_cast<float>(vtkIcePrefilteredEnvironment::LevelOf(property->Roughness)));
-  }
+  auto scalar = [](const char* name, double value, bool optional) {
+    return ShaderValue{ name, 1, { static_cast<float>(value), 0.0f, 0.0f }, optional };
+  };
+  auto color = [](const char* name, const double value[3]) {
+    return ShaderValue{ name, 3,
+      { static_cast<float>(value[0]), static_cast<float>(value[1]), static_cast<float>(value[2]) },
+      false };
+  };
+  return { color("iceTint", this->IceColor),
+    scalar("iceRefractionRatio", this->RefractionRatio, false),
+    color("iceAttenuationColor", this->AttenuationColor),
+    scalar("iceInverseAttenuationDistance", 1.0 / this->AttenuationDistance, false),
+    scalar("iceFresnelPower", this->FresnelPower, false),
+    // In the programs of some parts only.
+    scalar("iceBackNormalWeight", this->BackNormalWeight, true),
+    scalar("iceBumpStrength", this->BumpStrength, true) };
 }
 
 //------------------------------------------------------------------------------

@@ -24,6 +24,8 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for members
 
+#include <vector> // for GetShaderValues
+
 class vtkTexture;
 
 class RENDERINGICE_EXPORT vtkIceProperty : public vtkObject
@@ -306,8 +308,24 @@ public:
   vtkGetMacro(SnowAmount, double);
   ///@}
 
+#ifndef __VTK_WRAP__
+  /**
+   * What the surface's shaders read of the look directly: a uniform's name and its 1 or 3 float
+   * values (Optional: declared by the programs of some parts only). The code that owns a program
+   * sets them (vtkIcePropertyUniforms); a parameter of this kind is added here alone, with no
+   * OpenGL in the property.
+   */
+  struct ShaderValue
+  {
+    const char* Name;
+    int Components;
+    float Value[3];
+    bool Optional;
+  };
+  std::vector<ShaderValue> GetShaderValues() const;
+#endif
+
 protected:
-  friend class vtkIcePropertyUniforms; // sets the uniforms beside the parameters
   vtkIceProperty();
   ~vtkIceProperty() override;
 

@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The uniforms of a vtkIceProperty's parameters that the surface's shaders read directly, set
-// beside the parameters themselves (vtkIceProperty.cxx), so that a new parameter of that kind
-// touches the property, its GLSL and the look table only. Inside the module: not wrapped.
+// Sets a vtkIceProperty's uniforms on a program of the mapper's or of the screen-space interior:
+// every value of the property's GetShaderValues (so that a new parameter of that kind touches
+// the property and the look table only), and the prefiltered environment's level of the
+// property's Roughness. Inside the module: not wrapped.
 #ifndef vtkIcePropertyUniforms_h
 #define vtkIcePropertyUniforms_h
 
@@ -12,9 +13,6 @@ class vtkShaderProgram;
 class vtkIcePropertyUniforms
 {
 public:
-  // iceTint, iceRefractionRatio, iceAttenuationColor, iceInverseAttenuationDistance,
-  // iceFresnelPower, and where the program has them iceBackNormalWeight, iceBumpStrength,
-  // iceRoughnessLevel.
   static void Set(vtkIceProperty* property, vtkShaderProgram* program);
 };
 

@@ -4,7 +4,6 @@
 
 #include "vtkIceDepthIntervalPass.h"
 #include "vtkIceFrame.h"
-#include "vtkIceInteriorDrawer.h"
 #include "vtkIceMapper.h"
 #include "vtkIceOptics.h"
 #include "vtkIceScreenInteriorFS.h"
@@ -124,8 +123,7 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest ? nearest : frontDepth);
   frame->BindCubeMap(program, actor);
   renderer->UpdateLightingUniforms(program);
-  const vtkIceInteriorTable* interior =
-    vtkIceInteriorDrawer::BeginScreenInterior(mapper, renderer, actor, program);
+  const vtkIceInteriorTable* interior = mapper->BeginScreenInterior(renderer, actor, program);
   if (!interior)
   {
     return;
@@ -134,7 +132,7 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   this->Tiles.SetUniforms(program);
   quad->Render();
   this->Tiles.Finish();
-  vtkIceInteriorDrawer::EndScreenInterior(mapper, renderer);
+  mapper->EndScreenInterior(renderer);
 }
 
 //------------------------------------------------------------------------------

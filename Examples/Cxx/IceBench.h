@@ -52,7 +52,7 @@ struct Configuration
   std::string Label;
   Material Ice = Material::Plain;
   int Cracks = 0;
-  int AirPlanes = 0;                 // vtkIceMapper::NumberOfAirPlanes
+  int AirPlanes = 0;                 // vtkIceProperty::NumberOfAirPlanes
   int Interior = 1;                  // vtkIceMapper::InteriorMethods (1: InteriorScreenSpace)
   bool PlainBackfaceCulling = false; // plain VTK with its property's BackfaceCulling on
   bool DrawEveryFace = false;        // vtkIceMapper::CullHiddenBackfaces off

@@ -117,9 +117,9 @@ IceBench::Scene IceBench::BuildScene(
     // bumps, 2 cracks and 19 air planes).
     if (c.Ice != Material::FullLook)
     {
-      mapper->SetBumpStrength(0.0);
+      mapper->GetIceProperty()->SetBumpStrength(0.0);
     }
-    mapper->SetNumberOfAirPlanes(0);
+    mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
     mapper->SetCullHiddenBackfaces(!c.DrawEveryFace);
     mapper->SetInteriorMethod(c.Interior);
     actor->SetMapper(mapper);
@@ -131,8 +131,8 @@ IceBench::Scene IceBench::BuildScene(
     {
       vtkNew<vtkIcePass> icePass;
       renderer->SetPass(icePass);
-      mapper->SetNumberOfCracks(c.Cracks);
-      mapper->SetNumberOfAirPlanes(c.AirPlanes);
+      mapper->GetIceProperty()->SetNumberOfCracks(c.Cracks);
+      mapper->GetIceProperty()->SetNumberOfAirPlanes(c.AirPlanes);
       if (c.CubeMap)
       {
         scene.CubeMapPass = vtkSmartPointer<vtkIceCubeMapPass>::New();

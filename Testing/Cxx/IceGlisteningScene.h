@@ -129,8 +129,8 @@ struct Plane
     this->Source->SetResolution(64, 64);
     this->Mapper->SetInputConnection(this->Source->GetOutputPort());
     IceTest::UseCleanOptics(this->Mapper); // the glistening alone on the paper's ice
-    this->Mapper->GlisteningOn();
-    this->Mapper->SetIceColor(0.75, 0.85, 0.95);
+    this->Mapper->GetIceProperty()->GlisteningOn();
+    this->Mapper->GetIceProperty()->SetIceColor(0.75, 0.85, 0.95);
     this->Actor->SetMapper(this->Mapper);
     this->Renderer->AddActor(this->Actor);
     this->Sky = ClearSky(128);

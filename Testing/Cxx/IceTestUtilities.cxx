@@ -236,9 +236,9 @@ bool CheckImage(int argc, char* argv[], vtkRenderWindow* window)
 
 void UseCleanOptics(vtkIceMapper* mapper)
 {
-  mapper->SetNumberOfCracks(0);
-  mapper->SetNumberOfAirPlanes(0);
-  mapper->SetBumpStrength(0.0);
+  mapper->GetIceProperty()->SetNumberOfCracks(0);
+  mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
+  mapper->GetIceProperty()->SetBumpStrength(0.0);
 }
 
 vtkSmartPointer<vtkTexture> MakeCubeMap(int pattern, int faceSize)
@@ -457,13 +457,13 @@ Invisibility MeasureAgainst(vtkTexture* environment, vtkSkybox* skybox)
   const std::vector<bool> interior = SphereInterior(renderer, center, 1.0, 3);
 
   ice->VisibilityOn();
-  mapper->SetRefractionRatio(1.0);
-  mapper->SetFresnelPower(1.0e6);
+  mapper->GetIceProperty()->SetRefractionRatio(1.0);
+  mapper->GetIceProperty()->SetFresnelPower(1.0e6);
   window->Render();
   result.Invisible = MaskedDifference(result.Background, Capture(window), interior);
 
-  mapper->SetIndexOfRefraction(1.31);
-  mapper->SetFresnelPower(3.0);
+  mapper->GetIceProperty()->SetIndexOfRefraction(1.31);
+  mapper->GetIceProperty()->SetFresnelPower(3.0);
   window->Render();
   result.Visible = MaskedDifference(result.Background, Capture(window), interior);
   return result;
@@ -551,8 +551,8 @@ ClearSphereScene::ClearSphereScene()
   sphere->GetOutput()->GetBounds(this->Bounds);
   this->Mapper->SetInputData(sphere->GetOutput());
   UseCleanOptics(this->Mapper);
-  this->Mapper->SetIndexOfRefraction(1.0);
-  this->Mapper->SetFresnelPower(1.0e6);
+  this->Mapper->GetIceProperty()->SetIndexOfRefraction(1.0);
+  this->Mapper->GetIceProperty()->SetFresnelPower(1.0e6);
   this->Ice->SetMapper(this->Mapper);
   this->Renderer->AddActor(this->Ice);
   this->Renderer->SetPass(this->Pass);

@@ -45,8 +45,9 @@ IceTest::Stats CompareWithReference(IceTest::ClearSphereScene& scene, const IceT
 int TestIceAbsorption(int, char*[])
 {
   IceTest::ClearSphereScene scene;
-  scene.Mapper->SetAttenuationColor(AttenuationColor[0], AttenuationColor[1], AttenuationColor[2]);
-  scene.Mapper->SetAttenuationDistance(AttenuationDistance);
+  scene.Mapper->GetIceProperty()->SetAttenuationColor(
+    AttenuationColor[0], AttenuationColor[1], AttenuationColor[2]);
+  scene.Mapper->GetIceProperty()->SetAttenuationDistance(AttenuationDistance);
 
   bool ok = true;
   const struct

@@ -50,7 +50,7 @@ bool Air(int method, IceTest::Image& green)
   IceTest::BlockScene scene;
   scene.Mapper->SetInteriorMethod(method);
   const IceTest::Image clear = scene.Render(); // black background: the ice is non-black
-  scene.Mapper->SetNumberOfAirPlanes(19);
+  scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(19);
   const IceTest::Image milky = scene.Render();
   double clearSum = 0.0;
   double milkySum = 0.0;
@@ -71,7 +71,7 @@ bool Air(int method, IceTest::Image& green)
   std::cout << name << "air brightens the inside of the ice by " << gain << "/255 on average\n";
   bool ok = Expect(gain > 8.0, name + "air makes the ice whiter");
 
-  scene.Mapper->SetMilkiness(1.0);
+  scene.Mapper->GetIceProperty()->SetMilkiness(1.0);
   const IceTest::Image milkier = scene.Render();
   double milkierSum = 0.0;
   for (size_t p = 0; p < clear.RGB.size() / 3; ++p)
@@ -85,7 +85,7 @@ bool Air(int method, IceTest::Image& green)
             << "/255 on average\n";
   ok = Expect(milkierSum > milkySum + 3.0 * inside, name + "Milkiness 1 is whiter than 0.5") && ok;
 
-  scene.Mapper->SetMilkiness(0.5);
+  scene.Mapper->GetIceProperty()->SetMilkiness(0.5);
   scene.Mapper->SetDebugView(vtkIceMapper::DebugAir);
   green = scene.Render();
   size_t greenInside = 0;
@@ -127,7 +127,7 @@ bool Bumps()
 {
   IceTest::BlockScene scene;
   const IceTest::Image smooth = scene.Render();
-  scene.Mapper->SetBumpStrength(0.15);
+  scene.Mapper->GetIceProperty()->SetBumpStrength(0.15);
   const IceTest::Image bumpy = scene.Render();
   size_t inside = 0;
   size_t outside = 0;
@@ -177,7 +177,7 @@ bool Bumps()
   normalMap->InterpolateOn();
   normalMap->RepeatOn();
   normalMap->SetColorModeToDirectScalars();
-  scene.Mapper->SetNormalMap(normalMap);
+  scene.Mapper->GetIceProperty()->SetNormalMap(normalMap);
   const IceTest::Image mapped = scene.Render();
   size_t changed = 0;
   for (size_t p = 0; p < moved.RGB.size() / 3; ++p)
@@ -193,10 +193,10 @@ bool Seeds(int method)
   auto render = [method](int airSeed) {
     IceTest::BlockScene scene;
     scene.Mapper->SetInteriorMethod(method);
-    scene.Mapper->SetNumberOfAirPlanes(19);
-    scene.Mapper->SetNumberOfCracks(2);
-    scene.Mapper->SetBumpStrength(0.15);
-    scene.Mapper->SetAirSeed(airSeed);
+    scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(19);
+    scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
+    scene.Mapper->GetIceProperty()->SetBumpStrength(0.15);
+    scene.Mapper->GetIceProperty()->SetAirSeed(airSeed);
     return scene.Render();
   };
   const IceTest::Image first = render(5);

@@ -116,9 +116,9 @@ int TestIceBackfaceCulling(int, char*[])
 
   // Closed surfaces seen from outside.
   ok = Check(scene, true, "block, clean optics") && ok;
-  mapper->SetNumberOfCracks(3);
-  mapper->SetNumberOfAirPlanes(8);
-  mapper->SetBumpStrength(0.3);
+  mapper->GetIceProperty()->SetNumberOfCracks(3);
+  mapper->GetIceProperty()->SetNumberOfAirPlanes(8);
+  mapper->GetIceProperty()->SetBumpStrength(0.3);
   mapper->SetInteriorMethodToScreenSpace();
   ok = Check(scene, true, "block, cracks, air and bumps, screen space") && ok;
   mapper->SetInteriorMethodToPaperPasses();

@@ -191,7 +191,7 @@ DrawnResult RenderDrawn(vtkAlgorithm* source, const std::function<void(vtkIceMap
   renderer->AddActor(coneActor);
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
-  mapper->SetNumberOfCracks(8);
+  mapper->GetIceProperty()->SetNumberOfCracks(8);
   vtkNew<vtkActor> ice;
   ice->SetMapper(mapper);
   ice->SetPosition(1.0, 0.0, 0.0);
@@ -345,18 +345,18 @@ bool CheckParameters()
   const double inf = std::numeric_limits<double>::infinity();
 
   // Out of range: clamped, silently, as vtkSetClampMacro does.
-  mapper->SetRefractionRatio(-1.0);
-  const double eta = mapper->GetRefractionRatio();
-  mapper->SetRefractionRatio(inf);
-  const double etaInf = mapper->GetRefractionRatio();
-  mapper->SetBackNormalWeight(1.5);
-  const double aHigh = mapper->GetBackNormalWeight();
-  mapper->SetBackNormalWeight(-0.5);
-  const double aLow = mapper->GetBackNormalWeight();
-  mapper->SetNumberOfCracks(1000000);
-  const int cracks = mapper->GetNumberOfCracks();
-  mapper->SetIceColor(2.0, -1.0, 0.5);
-  const double* tint = mapper->GetIceColor();
+  mapper->GetIceProperty()->SetRefractionRatio(-1.0);
+  const double eta = mapper->GetIceProperty()->GetRefractionRatio();
+  mapper->GetIceProperty()->SetRefractionRatio(inf);
+  const double etaInf = mapper->GetIceProperty()->GetRefractionRatio();
+  mapper->GetIceProperty()->SetBackNormalWeight(1.5);
+  const double aHigh = mapper->GetIceProperty()->GetBackNormalWeight();
+  mapper->GetIceProperty()->SetBackNormalWeight(-0.5);
+  const double aLow = mapper->GetIceProperty()->GetBackNormalWeight();
+  mapper->GetIceProperty()->SetNumberOfCracks(1000000);
+  const int cracks = mapper->GetIceProperty()->GetNumberOfCracks();
+  mapper->GetIceProperty()->SetIceColor(2.0, -1.0, 0.5);
+  const double* tint = mapper->GetIceProperty()->GetIceColor();
   ok =
     Expect(eta == 0.05 && etaInf == 20.0 && aHigh == 1.0 && aLow == 0.0 && cracks == 1000 &&
         tint[0] == 1.0 && tint[1] == 0.0 && tint[2] == 0.5 && recorder->Warnings.empty(),
@@ -368,17 +368,19 @@ bool CheckParameters()
     ok;
 
   // NaN: one warning each, the value is kept.
-  mapper->SetRefractionRatio(0.75);
-  mapper->SetBackNormalWeight(0.33);
+  mapper->GetIceProperty()->SetRefractionRatio(0.75);
+  mapper->GetIceProperty()->SetBackNormalWeight(0.33);
   const vtkMTimeType before = mapper->GetMTime();
-  mapper->SetRefractionRatio(nan);
-  mapper->SetBackNormalWeight(nan);
-  mapper->SetFresnelPower(nan);
-  mapper->SetCrackIntensity(nan);
-  mapper->SetIceColor(0.5, nan, 0.5);
-  const bool kept = mapper->GetRefractionRatio() == 0.75 && mapper->GetBackNormalWeight() == 0.33 &&
-    mapper->GetFresnelPower() == 3.0 && mapper->GetCrackIntensity() == 1.0 &&
-    mapper->GetIceColor()[1] == 0.0 && mapper->GetMTime() == before;
+  mapper->GetIceProperty()->SetRefractionRatio(nan);
+  mapper->GetIceProperty()->SetBackNormalWeight(nan);
+  mapper->GetIceProperty()->SetFresnelPower(nan);
+  mapper->GetIceProperty()->SetCrackIntensity(nan);
+  mapper->GetIceProperty()->SetIceColor(0.5, nan, 0.5);
+  const bool kept = mapper->GetIceProperty()->GetRefractionRatio() == 0.75 &&
+    mapper->GetIceProperty()->GetBackNormalWeight() == 0.33 &&
+    mapper->GetIceProperty()->GetFresnelPower() == 3.0 &&
+    mapper->GetIceProperty()->GetCrackIntensity() == 1.0 &&
+    mapper->GetIceProperty()->GetIceColor()[1] == 0.0 && mapper->GetMTime() == before;
   bool named = recorder->Warnings.size() == 5;
   for (const std::string& warning : recorder->Warnings)
   {
@@ -396,11 +398,11 @@ bool CheckParameters()
   sphere->SetThetaResolution(48);
   sphere->SetPhiResolution(24);
   const DrawnResult r = RenderDrawn(sphere, [](vtkIceMapper* m) {
-    m->SetRefractionRatio(-5.0);
-    m->SetBackNormalWeight(7.0);
-    m->SetFresnelPower(1e300);
-    m->SetNumberOfCracks(1000000);
-    m->SetCrackIntensity(1e9);
+    m->GetIceProperty()->SetRefractionRatio(-5.0);
+    m->GetIceProperty()->SetBackNormalWeight(7.0);
+    m->GetIceProperty()->SetFresnelPower(1e300);
+    m->GetIceProperty()->SetNumberOfCracks(1000000);
+    m->GetIceProperty()->SetCrackIntensity(1e9);
   });
   ok = Expect(r.Errors + r.Warnings == 0 && r.ConeDrawn && r.IcePixels > 1000 && r.GLErrors.empty(),
          "clamped extremes (eta, a, Fresnel power, 1000 cracks, crack intensity) render: " +

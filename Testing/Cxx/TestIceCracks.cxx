@@ -59,7 +59,7 @@ bool Clipping(int method)
   IceTest::BlockScene scene;
   scene.Mapper->SetInteriorMethod(method);
   const IceTest::Image silhouette = scene.Render(); // black background: ice is non-black
-  scene.Mapper->SetNumberOfCracks(2);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
   bool ok = true;
   size_t inside;
   size_t outside;
@@ -80,9 +80,9 @@ bool Clipping(int method)
   }
 
   scene.Mapper->SetDebugView(vtkIceMapper::DebugOff);
-  scene.Mapper->SetNumberOfCracks(0);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(0);
   const IceTest::Image clear = scene.Render();
-  scene.Mapper->SetNumberOfCracks(2);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
   const IceTest::Image cracked = scene.Render();
   Count(
     cracked, silhouette,
@@ -101,7 +101,7 @@ bool Light(int method)
   scene.Mapper->SetInteriorMethod(method);
   // The highlights alone: the screen-space interior's sheets mirror the environment, not the
   // lights.
-  scene.Mapper->SetCrackReflection(0.0);
+  scene.Mapper->GetIceProperty()->SetCrackReflection(0.0);
   const IceTest::Image silhouette = scene.Render();
   vtkNew<vtkLight> light;
   light->SetLightTypeToHeadlight();
@@ -110,7 +110,7 @@ bool Light(int method)
   scene.Renderer->RemoveAllLights();
   scene.Renderer->AddLight(light);
   auto brightness = [&](int cracks, double intensity) {
-    scene.Mapper->SetNumberOfCracks(cracks);
+    scene.Mapper->GetIceProperty()->SetNumberOfCracks(cracks);
     light->SetIntensity(intensity);
     const IceTest::Image image = scene.Render();
     double sum = 0.0;
@@ -128,10 +128,10 @@ bool Light(int method)
   // Without a light: the cracks against the same cracks with their highlights scaled to 0. (Not
   // against no cracks: the screen-space interior's interior is another shader program, which Mesa
   // 25's llvmpipe rounds differently by 1/255 in a few pixels, light or not.)
-  const double intensity = scene.Mapper->GetCrackIntensity();
-  scene.Mapper->SetCrackIntensity(0.0);
+  const double intensity = scene.Mapper->GetIceProperty()->GetCrackIntensity();
+  scene.Mapper->GetIceProperty()->SetCrackIntensity(0.0);
   const double unlit = brightness(2, 0.0);
-  scene.Mapper->SetCrackIntensity(intensity);
+  scene.Mapper->GetIceProperty()->SetCrackIntensity(intensity);
   const double dark = brightness(2, 0.0) - unlit;
   const double lit = brightness(2, 1.0) - clear;
   const double bright = brightness(2, 2.0) - brightness(0, 2.0);
@@ -150,7 +150,7 @@ bool MethodsAgree(bool parallel)
   for (int method : { vtkIceMapper::InteriorPaperPasses, vtkIceMapper::InteriorScreenSpace })
   {
     IceTest::BlockScene scene;
-    scene.Mapper->SetNumberOfCracks(4);
+    scene.Mapper->GetIceProperty()->SetNumberOfCracks(4);
     scene.Mapper->SetInteriorMethod(method);
     scene.Mapper->SetDebugView(vtkIceMapper::DebugCracksClipped);
     scene.Renderer->GetActiveCamera()->SetParallelProjection(parallel);
@@ -179,8 +179,8 @@ bool Seeds(int method)
   auto render = [method](int seed) {
     IceTest::BlockScene scene;
     scene.Mapper->SetInteriorMethod(method);
-    scene.Mapper->SetNumberOfCracks(2);
-    scene.Mapper->SetCrackSeed(seed);
+    scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
+    scene.Mapper->GetIceProperty()->SetCrackSeed(seed);
     scene.Mapper->SetDebugView(vtkIceMapper::DebugCracksClipped);
     return scene.Render();
   };
@@ -196,12 +196,12 @@ bool PassCount(int method)
 {
   IceTest::BlockScene scene;
   scene.Mapper->SetInteriorMethod(method);
-  scene.Mapper->SetNumberOfCracks(2);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
   const bool paper = method == vtkIceMapper::InteriorPaperPasses;
   bool ok = true;
   for (int cracks : { 2, 128 })
   {
-    scene.Mapper->SetNumberOfCracks(cracks);
+    scene.Mapper->GetIceProperty()->SetNumberOfCracks(cracks);
     scene.Window->Render();
     const vtkIdType passes = scene.Pass->GetDepthIntervalPass()->GetNumberOfGeometryPasses();
     const vtkIdType draws = scene.Mapper->GetNumberOfCrackDraws();
@@ -227,8 +227,8 @@ bool PassCount(int method)
 bool PerturbRefraction()
 {
   IceTest::BlockScene scene;
-  scene.Mapper->SetNumberOfCracks(2);
-  scene.Mapper->SetCrackIntensity(0.0); // look at the refraction alone
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
+  scene.Mapper->GetIceProperty()->SetCrackIntensity(0.0); // look at the refraction alone
   const IceTest::Image plain = scene.Render();
   scene.Mapper->CracksPerturbRefractionOn();
   const IceTest::Image perturbed = scene.Render();

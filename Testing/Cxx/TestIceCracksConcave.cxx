@@ -75,8 +75,8 @@ int TestIceCracksConcave(int argc, char* argv[])
   for (int i = 0; i < 3; ++i)
   {
     mappers[i]->SetInputConnection(source->GetOutputPort());
-    mappers[i]->SetNumberOfCracks(4);
-    mappers[i]->SetCrackSeed(2);
+    mappers[i]->GetIceProperty()->SetNumberOfCracks(4);
+    mappers[i]->GetIceProperty()->SetCrackSeed(2);
     mappers[i]->SetInteriorMethod(
       i < 2 ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorScreenSpace);
     mappers[i]->SetCrackClipping(i == 1 ? vtkIceMapper::Geometry : vtkIceMapper::DepthInterval);

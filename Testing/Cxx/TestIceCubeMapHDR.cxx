@@ -59,7 +59,7 @@ double RenderIce(bool dynamic, float skyValue)
   sphere->SetPhiResolution(48);
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(sphere->GetOutputPort());
-  mapper->SetIceColor(0.2, 0.2, 0.2);
+  mapper->GetIceProperty()->SetIceColor(0.2, 0.2, 0.2);
   // The light through the ice alone: the air's and the cracks' white would add its own.
   IceTest::UseCleanOptics(mapper);
   vtkNew<vtkActor> ice;

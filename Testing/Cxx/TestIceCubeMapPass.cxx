@@ -153,8 +153,8 @@ bool Positions(bool frustumCulling)
 bool NearlyInvisible()
 {
   Room room(200.0);
-  room.IceMapper->SetRefractionRatio(1.0);
-  room.IceMapper->SetFresnelPower(1.0e6);
+  room.IceMapper->GetIceProperty()->SetRefractionRatio(1.0);
+  room.IceMapper->GetIceProperty()->SetFresnelPower(1.0e6);
   room.Ice->VisibilityOff();
   room.Window->Render();
   const IceTest::Image behind = IceTest::Capture(room.Window);

@@ -320,11 +320,11 @@ void WriteFigure(const char* path, const IceTest::Image& exact,
 bool WithEverything()
 {
   IceTest::BlockScene scene;
-  scene.Mapper->SetNumberOfCracks(3);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(3);
   scene.Mapper->CracksPerturbRefractionOn();
-  scene.Mapper->SetNumberOfAirPlanes(19);
-  scene.Mapper->SetBumpStrength(0.08);
-  scene.Mapper->GlisteningOn();
+  scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(19);
+  scene.Mapper->GetIceProperty()->SetBumpStrength(0.08);
+  scene.Mapper->GetIceProperty()->GlisteningOn();
   // The dynamic cube map sees the sky through a skybox.
   vtkNew<vtkSkybox> sky;
   sky->SetTexture(scene.Renderer->GetEnvironmentTexture());

@@ -33,7 +33,7 @@ int TestIceFigure5(int argc, char* argv[])
   {
     mappers[i]->SetInputConnection(block->GetOutputPort());
     IceTest::UseCleanOptics(mappers[i]); // the depths and the cracks alone
-    mappers[i]->SetNumberOfCracks(2);
+    mappers[i]->GetIceProperty()->SetNumberOfCracks(2);
     mappers[i]->SetDebugView(views[i]);
     actors[i]->SetMapper(mappers[i]);
     renderers[i]->AddActor(actors[i]);

@@ -64,7 +64,7 @@ bool Thirds()
   Keep(plane.Window, "thirds-on");
   const std::vector<Band> bands = IceGlistening::Sparkles(on, 0, top);
   Print("Glistening on (sun 35 degrees up, 120 degrees right of the view)", bands);
-  plane.Mapper->GlisteningOff();
+  plane.Mapper->GetIceProperty()->GlisteningOff();
   const std::vector<Band> off = IceGlistening::Sparkles(plane.Render(), 0, top);
   Keep(plane.Window, "thirds-off");
   Print("Glistening off", off);
@@ -96,10 +96,10 @@ struct Glints
 // Glints at a quarter of their default brightness, so that doubled ones do not clip at white.
 Glints Measure(IceGlistening::Plane& plane, double gain, int top)
 {
-  plane.Mapper->SetGlisteningAlignmentGain(gain);
-  plane.Mapper->SetGlisteningIntensity(0.0);
+  plane.Mapper->GetIceProperty()->SetGlisteningAlignmentGain(gain);
+  plane.Mapper->GetIceProperty()->SetGlisteningIntensity(0.0);
   const IceTest::Image plain = plane.Render();
-  plane.Mapper->SetGlisteningIntensity(0.25);
+  plane.Mapper->GetIceProperty()->SetGlisteningIntensity(0.25);
   const IceTest::Image glinting = plane.Render();
   Glints glints;
   glints.Light = IceGlistening::ExtraLight(glinting, plain, 0, top);
@@ -270,9 +270,9 @@ bool SnowAndIce()
   sphere->SetPhiResolution(48);
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(sphere->GetOutputPort());
-  mapper->GlisteningOn();
-  mapper->SetGlisteningScale(0.02);
-  mapper->SetIceColor(0.75, 0.85, 0.95);
+  mapper->GetIceProperty()->GlisteningOn();
+  mapper->GetIceProperty()->SetGlisteningScale(0.02);
+  mapper->GetIceProperty()->SetIceColor(0.75, 0.85, 0.95);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> renderer;
@@ -312,7 +312,7 @@ bool SnowAndIce()
   const double amounts[3] = { 0.0, 0.5, 1.0 };
   for (int i = 0; i < 3; ++i)
   {
-    mapper->SetSnowAmount(amounts[i]);
+    mapper->GetIceProperty()->SetSnowAmount(amounts[i]);
     const IceTest::Image image = IceTest::Capture((window->Render(), window.GetPointer()));
     Keep(window, "snow-" + std::to_string(i));
     Tone(image, inside, luminance[i], chroma[i]);

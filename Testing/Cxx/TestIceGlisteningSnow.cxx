@@ -37,9 +37,9 @@ int TestIceGlisteningSnow(int argc, char* argv[])
   {
     mappers[i]->SetInputConnection(teapot->GetOutputPort());
     IceTest::UseCleanOptics(mappers[i]); // the glistening alone on the paper's ice
-    mappers[i]->GlisteningOn();
-    mappers[i]->SetSnowAmount(amounts[i]);
-    mappers[i]->SetGlisteningScale(0.02);
+    mappers[i]->GetIceProperty()->GlisteningOn();
+    mappers[i]->GetIceProperty()->SetSnowAmount(amounts[i]);
+    mappers[i]->GetIceProperty()->SetGlisteningScale(0.02);
     actors[i]->SetMapper(mappers[i]);
     renderers[i]->AddActor(actors[i]);
     renderers[i]->SetEnvironmentTexture(sky);

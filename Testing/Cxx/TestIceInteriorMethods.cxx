@@ -44,11 +44,11 @@ IceTest::Image Render(vtkPolyDataAlgorithm* source, int method, bool ice, bool i
   mapper->SetInputConnection(source->GetOutputPort());
   mapper->SetInteriorMethod(method);
   // What both methods draw: the paper's passes draw no crack sheets.
-  mapper->SetCrackReflection(0.0);
+  mapper->GetIceProperty()->SetCrackReflection(0.0);
   if (!interior)
   {
-    mapper->SetNumberOfCracks(0);
-    mapper->SetNumberOfAirPlanes(0);
+    mapper->GetIceProperty()->SetNumberOfCracks(0);
+    mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
   }
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -109,7 +109,7 @@ struct IceScene
 
     this->Teapot->SetResolution(8);
     this->Mapper->SetInputConnection(this->Teapot->GetOutputPort());
-    this->Mapper->SetNumberOfCracks(4);
+    this->Mapper->GetIceProperty()->SetNumberOfCracks(4);
     this->Ice->SetMapper(this->Mapper);
     this->Renderer->AddActor(this->Ice);
     this->CubeMaps->SetFaceSize(64);
@@ -529,7 +529,7 @@ bool SharedMapper()
     IceScene scene;
     vtkNew<vtkIceMapper> otherMapper;
     otherMapper->SetInputConnection(scene.Teapot->GetOutputPort());
-    otherMapper->SetNumberOfCracks(4);
+    otherMapper->GetIceProperty()->SetNumberOfCracks(4);
     vtkNew<vtkActor> other;
     other->SetMapper(shared ? scene.Mapper.Get() : otherMapper.Get());
     other->SetPosition(-1.6, 0.2, -0.6);
@@ -567,7 +567,8 @@ bool Translucency(bool depthPeeling)
     sphere->SetPhiResolution(24);
     vtkNew<vtkIceMapper> mapper;
     mapper->SetInputConnection(sphere->GetOutputPort());
-    mapper->SetNumberOfCracks(0); // cracks are added over the finished frame (see reliability.md)
+    mapper->GetIceProperty()->SetNumberOfCracks(
+      0); // cracks are added over the finished frame (see reliability.md)
     vtkNew<vtkActor> ice;
     ice->SetMapper(mapper);
     renderer->AddActor(ice);

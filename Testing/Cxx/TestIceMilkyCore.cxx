@@ -67,11 +67,11 @@ Comparison CompareWithReference(IceTest::ClearSphereScene& scene, const IceTest:
 int TestIceMilkyCore(int, char*[])
 {
   IceTest::ClearSphereScene scene;
-  scene.Mapper->SetMilkiness(Milkiness);
+  scene.Mapper->GetIceProperty()->SetMilkiness(Milkiness);
   const IceTest::Image noCore = scene.Render();
 
   bool ok = true;
-  scene.Mapper->SetMilkyCoreRadius(CoreRadius);
+  scene.Mapper->GetIceProperty()->SetMilkyCoreRadius(CoreRadius);
   const Comparison comparison = CompareWithReference(scene, scene.Render());
   ok = IceTest::ReportReference("the milky core along the chord", comparison.Stats, 20000) && ok;
   std::cout << "whitening: centre " << comparison.CentreWhiteness << ", rim "
@@ -84,7 +84,7 @@ int TestIceMilkyCore(int, char*[])
   }
 
   // Radius 0: no core, the picture of a mapper never given one.
-  scene.Mapper->SetMilkyCoreRadius(0.0);
+  scene.Mapper->GetIceProperty()->SetMilkyCoreRadius(0.0);
   const size_t changed = IceTest::CountDiffering(noCore, scene.Render(), 0);
   if (changed != 0)
   {

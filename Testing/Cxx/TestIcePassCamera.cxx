@@ -35,8 +35,8 @@ bool Run(int interiorMethod)
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInteriorMethod(interiorMethod);
   mapper->SetInputConnection(block->GetOutputPort());
-  mapper->SetNumberOfCracks(4);
-  mapper->SetNumberOfAirPlanes(5);
+  mapper->GetIceProperty()->SetNumberOfCracks(4);
+  mapper->GetIceProperty()->SetNumberOfAirPlanes(5);
   vtkNew<vtkActor> ice;
   ice->SetMapper(mapper);
 

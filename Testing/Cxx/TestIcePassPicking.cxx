@@ -49,7 +49,7 @@ struct Scene
     sphere->SetRadius(0.6);
     vtkNew<vtkIceMapper> iceMapper;
     iceMapper->SetInputConnection(sphere->GetOutputPort());
-    iceMapper->SetNumberOfCracks(2);
+    iceMapper->GetIceProperty()->SetNumberOfCracks(2);
     this->Ice->SetMapper(iceMapper);
     this->Ice->SetPosition(1.0, 0.0, 0.0);
     this->Renderer->AddActor(this->Cone);

@@ -174,7 +174,7 @@ bool IceUnderEachOption()
     vtkNew<vtkSphereSource> sphere;
     vtkNew<vtkIceMapper> mapper;
     mapper->SetInputConnection(sphere->GetOutputPort());
-    mapper->SetNumberOfCracks(2);
+    mapper->GetIceProperty()->SetNumberOfCracks(2);
     vtkNew<vtkActor> ice;
     ice->SetMapper(mapper);
     ice->SetPosition(-0.2, 0.6, 1.2);

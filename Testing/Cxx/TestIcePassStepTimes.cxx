@@ -63,7 +63,7 @@ int TestIcePassStepTimes(int, char*[])
   vtkNew<vtkIceBlockSource> block;
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputConnection(block->GetOutputPort());
-  mapper->SetNumberOfCracks(3);
+  mapper->GetIceProperty()->SetNumberOfCracks(3);
   mapper->SetInteriorMethodToPaperPasses();
   vtkNew<vtkActor> ice;
   ice->SetMapper(mapper);

@@ -93,7 +93,7 @@ bool OneRenderer()
   scene.Actors[0]->VisibilityOn();
   const IceTest::Image clear = scene.Render();
 
-  scene.Mappers[0]->SetNumberOfCracks(6);
+  scene.Mappers[0]->GetIceProperty()->SetNumberOfCracks(6);
   scene.Mappers[0]->SetDebugView(vtkIceMapper::DebugCracksClipped);
   const IceTest::Image red = scene.Render();
   size_t inside = 0;
@@ -120,7 +120,7 @@ bool OneRenderer()
       std::to_string(outside) + " outside (" + std::to_string(onB) + " on B)");
 
   scene.Mappers[0]->SetDebugView(vtkIceMapper::DebugOff);
-  scene.Mappers[0]->SetNumberOfAirPlanes(8);
+  scene.Mappers[0]->GetIceProperty()->SetNumberOfAirPlanes(8);
   const IceTest::Image full = scene.Render();
   size_t changedInA = 0;
   size_t changedOutside = 0;
@@ -156,8 +156,8 @@ bool TwoRenderers()
     block->SetSeed(5 + i);
     vtkNew<vtkIceMapper> mapper;
     mapper->SetInputConnection(block->GetOutputPort());
-    mapper->SetNumberOfCracks(i == 0 ? 4 : 0);
-    mapper->SetNumberOfAirPlanes(i == 0 ? 0 : 6);
+    mapper->GetIceProperty()->SetNumberOfCracks(i == 0 ? 4 : 0);
+    mapper->GetIceProperty()->SetNumberOfAirPlanes(i == 0 ? 0 : 6);
     mapper->SetTwoSidedRefraction(i == 0);
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);

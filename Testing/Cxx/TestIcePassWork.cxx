@@ -51,7 +51,7 @@ struct Scene
   Scene()
   {
     this->Mapper->SetInputConnection(this->Block->GetOutputPort());
-    this->Mapper->SetNumberOfCracks(4);
+    this->Mapper->GetIceProperty()->SetNumberOfCracks(4);
     this->Mapper->CracksPerturbRefractionOn();
     this->Ice->SetMapper(this->Mapper);
     this->Renderer->AddActor(this->Ice);
@@ -122,21 +122,21 @@ bool DepthIntervalOnlyWhenRead()
     return passes;
   };
   scene.Mapper->CracksPerturbRefractionOff();
-  scene.Mapper->SetNumberOfCracks(0);
-  scene.Mapper->SetNumberOfAirPlanes(0);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(0);
+  scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
   ok =
     Expect(passesPerFrame() == 0, "no cracks, no air, no debug view: no depth-interval pass") && ok;
-  scene.Mapper->SetNumberOfAirPlanes(19);
+  scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(19);
   scene.Mapper->SetInteriorMethodToPaperPasses();
   ok =
     Expect(passesPerFrame() == 2, "air in the paper's passes: the depth-interval pass runs") && ok;
   scene.Mapper->SetInteriorMethodToScreenSpace();
   ok = Expect(passesPerFrame() == 0, "air, screen-space interior: no depth-interval pass") && ok;
-  scene.Mapper->SetNumberOfAirPlanes(0);
+  scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
   scene.Mapper->SetDebugView(vtkIceMapper::DebugBackDepth);
   ok = Expect(passesPerFrame() == 2, "a depth debug view: the depth-interval pass runs") && ok;
   scene.Mapper->SetDebugView(vtkIceMapper::DebugOff);
-  scene.Mapper->SetNumberOfCracks(2);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
   ok =
     Expect(passesPerFrame() == 0, "cracks, screen-space interior: no depth-interval pass") && ok;
   scene.Mapper->SetInteriorMethodToPaperPasses();
@@ -162,12 +162,12 @@ bool BackfaceNormalsOnlyWhenNeeded()
   ok =
     Expect(passesPerFrame() == 1, "one-sided ice with cracks: the back-face pass runs (depth)") &&
     ok;
-  scene.Mapper->SetNumberOfCracks(0);
-  scene.Mapper->SetNumberOfAirPlanes(0);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(0);
+  scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
   ok =
     Expect(passesPerFrame() == 0, "one-sided ice without cracks or air: no back-face pass") && ok;
-  scene.Mapper->SetNumberOfCracks(4);
-  scene.Mapper->SetNumberOfAirPlanes(19);
+  scene.Mapper->GetIceProperty()->SetNumberOfCracks(4);
+  scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(19);
   scene.Mapper->SetInteriorMethodToPaperPasses();
   ok = Expect(passesPerFrame() == 0, "one-sided ice, paper passes: no back-face pass") && ok;
   scene.Mapper->SetInteriorMethodToScreenSpace();

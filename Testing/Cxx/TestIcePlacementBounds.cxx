@@ -69,9 +69,9 @@ int TestIcePlacementBounds(int, char*[])
   const IceTest::Image otherSilhouette = scene.Render();
   mapper->SetInputData(piece);
   const IceTest::Image silhouette = scene.Render();
-  mapper->SetNumberOfCracks(4);
-  mapper->SetNumberOfAirPlanes(8);
-  mapper->SetBumpStrength(0.5);
+  mapper->GetIceProperty()->SetNumberOfCracks(4);
+  mapper->GetIceProperty()->SetNumberOfAirPlanes(8);
+  mapper->GetIceProperty()->SetBumpStrength(0.5);
   mapper->SetInputData(whole);
   const IceTest::Image wholeImage = scene.Render();
   mapper->SetInputData(piece);

@@ -65,8 +65,8 @@ IceTest::Image Render(bool ice, Input input, const std::function<void(vtkActor*)
     scalars->GetOutput()->GetCellData()->SetScalars(
       scalars->GetOutput()->GetPointData()->GetScalars());
   }
-  mapper->SetNumberOfCracks(3);
-  mapper->SetNumberOfAirPlanes(4);
+  mapper->GetIceProperty()->SetNumberOfCracks(3);
+  mapper->GetIceProperty()->SetNumberOfAirPlanes(4);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->SetVisibility(ice);

@@ -71,7 +71,7 @@ int TestIceRoughness(int argc, char* argv[])
   bool ok = true;
   for (const double roughness : { 0.25, 0.5, 0.75, 1.0 })
   {
-    scene.Mapper->SetRoughness(roughness);
+    scene.Mapper->GetIceProperty()->SetRoughness(roughness);
     const IceTest::Image image = scene.Render();
     std::vector<double> differences;
     for (int y = 0; y < image.Height; y += 6)

@@ -57,12 +57,12 @@ namespace
 // features join the soak in one place.
 void ConfigureFullIce(vtkIceMapper* mapper, int seed)
 {
-  mapper->SetNumberOfCracks(6);
-  mapper->SetCrackSeed(seed);
-  mapper->SetCrackIntensity(1.5);
-  mapper->SetNumberOfAirPlanes(19);
-  mapper->SetAirSeed(seed);
-  mapper->SetBumpStrength(0.1);
+  mapper->GetIceProperty()->SetNumberOfCracks(6);
+  mapper->GetIceProperty()->SetCrackSeed(seed);
+  mapper->GetIceProperty()->SetCrackIntensity(1.5);
+  mapper->GetIceProperty()->SetNumberOfAirPlanes(19);
+  mapper->GetIceProperty()->SetAirSeed(seed);
+  mapper->GetIceProperty()->SetBumpStrength(0.1);
 }
 
 // The full ice pass: two-sided refraction, the depth interval (cracks, air) and a dynamic cube

@@ -16,9 +16,9 @@ int main()
   mapper->SetInputConnection(teapot->GetOutputPort());
   // The reader's header needs no OpenImageIO headers (the library links OpenImageIO privately).
   vtkNew<vtkIceEnvironmentReader> reader;
-  std::cout << mapper->GetClassName() << " eta " << mapper->GetRefractionRatio() << ", teapot "
-            << teapot->GetOutput()->GetNumberOfPolys() << " triangles, " << reader->GetClassName()
-            << " layout " << reader->GetLayoutAsString() << ", the look's setting eta "
-            << (IceLook::Find("eta") ? "found" : "missing") << "\n";
+  std::cout << mapper->GetClassName() << " eta " << mapper->GetIceProperty()->GetRefractionRatio()
+            << ", teapot " << teapot->GetOutput()->GetNumberOfPolys() << " triangles, "
+            << reader->GetClassName() << " layout " << reader->GetLayoutAsString()
+            << ", the look's setting eta " << (IceLook::Find("eta") ? "found" : "missing") << "\n";
   return teapot->GetOutput()->GetNumberOfPolys() > 0 && IceLook::Find("eta") ? 0 : 1;
 }

@@ -31,19 +31,19 @@ def pixels(image):
 
 def check_properties():
     mapper = vtkice.vtkIceMapper()
-    check(not mapper.GetGlistening(), "Glistening is off by default")
-    check(mapper.GetSnowAmount() == 0.0)
-    check(abs(mapper.GetGlisteningScale() - 0.03) < 1e-12)
-    check(mapper.GetGlisteningIntensity() == 1.0)
-    check(mapper.GetGlisteningAlignmentGain() == 2.0)
-    mapper.SetGlistening(True)
-    check(mapper.GetGlistening())
-    mapper.SetSnowAmount(2.0)
-    check(mapper.GetSnowAmount() == 1.0, "SnowAmount is clamped to [0, 1]")
-    mapper.SetSnowAmount(-1.0)
-    check(mapper.GetSnowAmount() == 0.0, "SnowAmount is clamped to [0, 1]")
-    mapper.SetGlisteningAlignmentGain(0.5)
-    check(mapper.GetGlisteningAlignmentGain() == 1.0, "the gain is at least 1")
+    check(not mapper.GetIceProperty().GetGlistening(), "Glistening is off by default")
+    check(mapper.GetIceProperty().GetSnowAmount() == 0.0)
+    check(abs(mapper.GetIceProperty().GetGlisteningScale() - 0.03) < 1e-12)
+    check(mapper.GetIceProperty().GetGlisteningIntensity() == 1.0)
+    check(mapper.GetIceProperty().GetGlisteningAlignmentGain() == 2.0)
+    mapper.GetIceProperty().SetGlistening(True)
+    check(mapper.GetIceProperty().GetGlistening())
+    mapper.GetIceProperty().SetSnowAmount(2.0)
+    check(mapper.GetIceProperty().GetSnowAmount() == 1.0, "SnowAmount is clamped to [0, 1]")
+    mapper.GetIceProperty().SetSnowAmount(-1.0)
+    check(mapper.GetIceProperty().GetSnowAmount() == 0.0, "SnowAmount is clamped to [0, 1]")
+    mapper.GetIceProperty().SetGlisteningAlignmentGain(0.5)
+    check(mapper.GetIceProperty().GetGlisteningAlignmentGain() == 1.0, "the gain is at least 1")
 
 
 def check_texture():
@@ -92,7 +92,7 @@ def check_rendering():
     plane.SetResolution(16, 16)
     mapper = vtkice.vtkIceMapper()
     mapper.SetInputConnection(plane.GetOutputPort())
-    mapper.SetIceColor(0.2, 0.25, 0.3)
+    mapper.GetIceProperty().SetIceColor(0.2, 0.25, 0.3)
     actor = vtk.vtkActor()
     actor.SetMapper(mapper)
     renderer.AddActor(actor)
@@ -131,9 +131,9 @@ def check_rendering():
         return sum(values) / len(values)
 
     plain = render()
-    mapper.SetGlistening(True)
+    mapper.GetIceProperty().SetGlistening(True)
     ice = render()
-    mapper.SetSnowAmount(1.0)
+    mapper.GetIceProperty().SetSnowAmount(1.0)
     snow = render()
     print("glints: %d with Glistening off, %d on; mean brightness %.1f dark ice, %.1f snow"
           % (glints(plain), glints(ice), mean_brightness(ice), mean_brightness(snow)))

@@ -59,9 +59,10 @@ INTEGERS = {"NumberOfCracks": (0, 1000), "NumberOfAirPlanes": (0, 1000)}
 
 def parameters():
     mapper = vtkice.vtkIceMapper()
+    look = mapper.GetIceProperty()  # the look's parameters; a change of it modifies the mapper
     for name in CLAMPED:
-        set_, get = getattr(mapper, "Set" + name), getattr(mapper, "Get" + name)
-        low, high = getattr(mapper, "Get%sMinValue" % name)(), getattr(mapper, "Get%sMaxValue" % name)()
+        set_, get = getattr(look, "Set" + name), getattr(look, "Get" + name)
+        low, high = getattr(look, "Get%sMinValue" % name)(), getattr(look, "Get%sMaxValue" % name)()
         results = []
         for value, expected in ((-math.inf, low), (math.inf, high), (low - 1.0, low),
                                 (high * 2.0 + 1.0, high), (low, low), (high, high)):
@@ -75,14 +76,14 @@ def parameters():
         check("%s clamps to [%g, %g] and refuses NaN" % (name, low, high),
               all(results) and refused, "results %s, NaN refused %s" % (results, refused))
     for name, (low, high) in INTEGERS.items():
-        set_, get = getattr(mapper, "Set" + name), getattr(mapper, "Get" + name)
+        set_, get = getattr(look, "Set" + name), getattr(look, "Get" + name)
         set_(-2 ** 31)
         below = get()
         set_(2 ** 31 - 1)
         check("%s clamps to [%d, %d]" % (name, low, high), (below, get()) == (low, high),
               "got %s, %s" % (below, get()))
     for name in ("IceColor", "AttenuationColor"):
-        set_, get = getattr(mapper, "Set" + name), getattr(mapper, "Get" + name)
+        set_, get = getattr(look, "Set" + name), getattr(look, "Get" + name)
         with Messages() as messages:
             set_(0.5, math.nan, 0.5)
         color = get()

@@ -49,11 +49,11 @@ def test_kinds_help_and_camera():
 def test_ranges_are_the_librarys():
     mapper = vtkice.vtkIceMapper()
     ior = Look.FindSetting("ior")
-    check(Look.GetMinimum(ior) == mapper.GetIndexOfRefractionMinValue())
-    check(Look.GetMaximum(ior) == mapper.GetIndexOfRefractionMaxValue())
+    check(Look.GetMinimum(ior) == mapper.GetIceProperty().GetIndexOfRefractionMinValue())
+    check(Look.GetMaximum(ior) == mapper.GetIceProperty().GetIndexOfRefractionMaxValue())
     check(Look.GetMaximum(Look.FindSetting("eta")) == 1.0, "eta: air / ice, up to 1")
     cracks = Look.FindSetting("cracks")
-    check(Look.GetMaximum(cracks) == mapper.GetNumberOfCracksMaxValue())
+    check(Look.GetMaximum(cracks) == mapper.GetIceProperty().GetNumberOfCracksMaxValue())
     check(Look.GetMinimum(Look.FindSetting("glistening")) == 0.0, "a switch has no range")
 
 
@@ -70,7 +70,7 @@ def test_choices_in_enum_order():
 def test_defaults():
     mapper = vtkice.vtkIceMapper()
     eta = float(Look.GetDefault(Look.FindSetting("eta")))
-    check(abs(eta - mapper.GetRefractionRatio()) < 1e-9, "printed with 10 digits")
+    check(abs(eta - mapper.GetIceProperty().GetRefractionRatio()) < 1e-9, "printed with 10 digits")
     check(Look.GetDefault(Look.FindSetting("cube-map")) == "on")
     check(Look.GetDefault(Look.FindSetting("camera-position")) == "", "the scene frames its model")
 
@@ -78,24 +78,24 @@ def test_defaults():
 def test_apply_sets_and_value_reads():
     mapper, ice_pass, cube_maps, camera = scene()
     check(Look.Apply(mapper, ice_pass, cube_maps, camera, "cracks", "7") == "")
-    check(mapper.GetNumberOfCracks() == 7)
+    check(mapper.GetIceProperty().GetNumberOfCracks() == 7)
     check(Look.GetValue(mapper, ice_pass, cube_maps, camera, "cracks") == "7")
     check(Look.Apply(mapper, ice_pass, cube_maps, camera, "cube-map", "off") == "")
     check(ice_pass.GetCubeMapPass() is None)
     check(Look.Apply(mapper, ice_pass, cube_maps, camera, "interior", "paper-passes") == "")
     check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses)
     check(Look.Apply(mapper, ice_pass, cube_maps, camera, "color", "0.5,0.6,0.7") == "")
-    check(mapper.GetIceColor() == (0.5, 0.6, 0.7))
+    check(mapper.GetIceProperty().GetIceColor() == (0.5, 0.6, 0.7))
 
 
 def test_apply_refuses_bad_values_and_changes_nothing():
     mapper, ice_pass, cube_maps, camera = scene()
-    before = mapper.GetRefractionRatio()
+    before = mapper.GetIceProperty().GetRefractionRatio()
     problem = Look.Apply(mapper, ice_pass, cube_maps, camera, "eta", "50")
     check("bad eta '50'" in problem and "[" in problem, problem)
     problem = Look.Apply(mapper, ice_pass, cube_maps, camera, "eta", "1.31")
     check("--ior 1.31" in problem, "an eta above 1 names the ior: " + problem)
-    check(mapper.GetRefractionRatio() == before)
+    check(mapper.GetIceProperty().GetRefractionRatio() == before)
     check("unknown setting" in Look.Apply(mapper, ice_pass, cube_maps, camera, "etta", "1"))
     check("one of" in Look.Apply(mapper, ice_pass, cube_maps, camera, "interior", "fast"))
     # The single-pass interior is gone: its name is refused with the choices there are.
@@ -109,14 +109,15 @@ def test_apply_preset():
     mapper, ice_pass, cube_maps, camera = scene()
     glacier = os.path.join(PRESETS, "glacier.ice")
     check(Look.ApplyPreset(mapper, ice_pass, cube_maps, camera, glacier) == "")
-    check(mapper.GetNumberOfCracks() == 8 and mapper.GetNumberOfAirPlanes() == 40)
+    look = mapper.GetIceProperty()
+    check(look.GetNumberOfCracks() == 8 and look.GetNumberOfAirPlanes() == 40)
     with tempfile.TemporaryDirectory() as folder:
         bad = os.path.join(folder, "bad.ice")
         with open(bad, "w") as f:
             f.write("cracks = 3\neta = 50\n")
         problem = Look.ApplyPreset(mapper, ice_pass, cube_maps, camera, bad)
     check(problem.startswith(bad + ":2: "), problem)
-    check(mapper.GetNumberOfCracks() == 8, "a preset with a problem changes nothing")
+    check(look.GetNumberOfCracks() == 8, "a preset with a problem changes nothing")
 
 
 def main():

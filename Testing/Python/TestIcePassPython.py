@@ -20,9 +20,9 @@ def main():
     teapot = vtkice.vtkIceTeapotSource()
     mapper, ice = add_ice(renderer, teapot)
     # Compare the refraction alone: no cracks, air or bumps.
-    mapper.SetNumberOfCracks(0)
-    mapper.SetNumberOfAirPlanes(0)
-    mapper.SetBumpStrength(0.0)
+    mapper.GetIceProperty().SetNumberOfCracks(0)
+    mapper.GetIceProperty().SetNumberOfAirPlanes(0)
+    mapper.GetIceProperty().SetBumpStrength(0.0)
 
     window = vtk.vtkRenderWindow()
     window.SetSize(200, 150)
@@ -65,8 +65,8 @@ def main():
     # passes; both change the ice, the paper's passes differently.
     mapper.TwoSidedRefractionOn()
     check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorScreenSpace)
-    mapper.SetNumberOfCracks(2)
-    mapper.SetNumberOfAirPlanes(19)
+    mapper.GetIceProperty().SetNumberOfCracks(2)
+    mapper.GetIceProperty().SetNumberOfAirPlanes(19)
     screen = grab(window)
     mapper.SetInteriorMethodToPaperPasses()
     check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorPaperPasses)
@@ -79,8 +79,8 @@ def main():
           % interior)
     check(interior[0] >= 3.0 and interior[1] >= 3.0, "cracks and air must show in both methods")
     check(interior[2] > 0.0, "the methods differ in detail")
-    mapper.SetNumberOfCracks(0)
-    mapper.SetNumberOfAirPlanes(0)
+    mapper.GetIceProperty().SetNumberOfCracks(0)
+    mapper.GetIceProperty().SetNumberOfAirPlanes(0)
 
     ice.VisibilityOff()
     with_pass_no_ice = grab(window)

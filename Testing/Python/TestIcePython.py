@@ -15,16 +15,17 @@ from ice_test_helpers import add_ice, check, grab, mean_difference, sky_renderer
 
 def main():
     mapper = vtkice.vtkIceMapper()
-    check(abs(mapper.GetIndexOfRefraction() - 1.31) < 1e-12)
-    check(abs(mapper.GetRefractionRatio() - 1.0 / 1.31) < 1e-12, "RefractionRatio is 1 / IOR")
-    mapper.SetIndexOfRefraction(1.5)
-    check(abs(mapper.GetRefractionRatio() - 1.0 / 1.5) < 1e-12, "IOR sets RefractionRatio")
-    mapper.SetIndexOfRefraction(1.31)
-    check(mapper.GetFresnelPower() == 3.0)
-    check(abs(mapper.GetBackNormalWeight() - 0.33) < 1e-12)
-    mapper.SetBackNormalWeight(5.0)
-    check(mapper.GetBackNormalWeight() == 1.0, "BackNormalWeight is clamped to [0, 1]")
-    mapper.SetBackNormalWeight(0.33)
+    look = mapper.GetIceProperty()
+    check(abs(look.GetIndexOfRefraction() - 1.31) < 1e-12)
+    check(abs(look.GetRefractionRatio() - 1.0 / 1.31) < 1e-12, "RefractionRatio is 1 / IOR")
+    look.SetIndexOfRefraction(1.5)
+    check(abs(look.GetRefractionRatio() - 1.0 / 1.5) < 1e-12, "IOR sets RefractionRatio")
+    look.SetIndexOfRefraction(1.31)
+    check(look.GetFresnelPower() == 3.0)
+    check(abs(look.GetBackNormalWeight() - 0.33) < 1e-12)
+    look.SetBackNormalWeight(5.0)
+    check(look.GetBackNormalWeight() == 1.0, "BackNormalWeight is clamped to [0, 1]")
+    look.SetBackNormalWeight(0.33)
 
     renderer = sky_renderer(128)
 
@@ -49,13 +50,13 @@ def main():
     background = grab(window)
 
     ice.VisibilityOn()
-    mapper.SetRefractionRatio(1.0)
-    mapper.SetFresnelPower(1.0e6)
+    mapper.GetIceProperty().SetRefractionRatio(1.0)
+    mapper.GetIceProperty().SetFresnelPower(1.0e6)
     window.Render()
     invisible = mean_difference(background, grab(window), *box)
 
-    mapper.SetIndexOfRefraction(1.31)
-    mapper.SetFresnelPower(3.0)
+    mapper.GetIceProperty().SetIndexOfRefraction(1.31)
+    mapper.GetIceProperty().SetFresnelPower(3.0)
     window.Render()
     visible = mean_difference(background, grab(window), *box)
 

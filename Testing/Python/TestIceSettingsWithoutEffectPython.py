@@ -15,8 +15,8 @@ def warnings_of_one_render(configure, with_pass):
     """The warning text of rendering a sphere whose mapper `configure` set up, twice."""
     renderer = sky_renderer(32)
     mapper, _ = add_ice(renderer, vtk.vtkSphereSource())
-    mapper.SetNumberOfCracks(0)
-    mapper.SetNumberOfAirPlanes(0)
+    mapper.GetIceProperty().SetNumberOfCracks(0)
+    mapper.GetIceProperty().SetNumberOfAirPlanes(0)
     configure(mapper)
     if with_pass:
         renderer.SetPass(vtkice.vtkIcePass())
@@ -39,26 +39,26 @@ def warnings_of_one_render(configure, with_pass):
 
 
 def snow(mapper):
-    mapper.SetSnowAmount(0.6)
+    mapper.GetIceProperty().SetSnowAmount(0.6)
 
 
 def snow_and_glistening(mapper):
-    mapper.SetSnowAmount(0.6)
-    mapper.GlisteningOn()
+    mapper.GetIceProperty().SetSnowAmount(0.6)
+    mapper.GetIceProperty().GlisteningOn()
 
 
 def absorption(mapper):
-    mapper.SetAttenuationColor(0.5, 0.7, 0.9)
-    mapper.SetAttenuationDistance(1.0)
+    mapper.GetIceProperty().SetAttenuationColor(0.5, 0.7, 0.9)
+    mapper.GetIceProperty().SetAttenuationDistance(1.0)
 
 
 def core_in_paper_passes(mapper):
-    mapper.SetMilkyCoreRadius(0.5)
+    mapper.GetIceProperty().SetMilkyCoreRadius(0.5)
     mapper.SetInteriorMethod(vtkice.vtkIceMapper.InteriorPaperPasses)
 
 
 def core_in_screen_space(mapper):
-    mapper.SetMilkyCoreRadius(0.5)
+    mapper.GetIceProperty().SetMilkyCoreRadius(0.5)
 
 
 def test_snow_without_glistening_warns_once():

@@ -175,6 +175,6 @@ def test_look_parameters_reach_the_mapper():
     plotter = pv.Plotter(off_screen=True, window_size=SIZE)
     actor = vtkice.pyvista.add_ice(plotter, pv.Sphere(), number_of_cracks=5,
                                    IceColor=(0.8, 0.9, 1.0))
-    assert actor.GetMapper().GetNumberOfCracks() == 5
-    assert actor.GetMapper().GetIceColor() == pytest.approx((0.8, 0.9, 1.0))
+    assert actor.GetMapper().GetIceProperty().GetNumberOfCracks() == 5
+    assert actor.GetMapper().GetIceProperty().GetIceColor() == pytest.approx((0.8, 0.9, 1.0))
     plotter.close()

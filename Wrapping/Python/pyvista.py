@@ -19,28 +19,37 @@ import re
 import warnings
 
 import pyvista as _pv
+from vtkmodules.vtkCommonCore import vtkObject as _vtkObject
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper as _vtkOpenGLPolyDataMapper
 
-from . import vtkIceCubeMapPass, vtkIceMapper, vtkIcePass
+from . import vtkIceCubeMapPass, vtkIceMapper, vtkIcePass, vtkIceProperty
 
 __all__ = ["add_ice", "ice_pass"]
 
 
 def _setter(mapper, name):
-    """The mapper's Set method for a parameter given as 'NumberOfCracks' or 'number_of_cracks'."""
+    """The Set method for a parameter given as 'NumberOfCracks' or 'number_of_cracks': the
+    look's are the mapper's vtkIceProperty's, how the ice is drawn the mapper's own."""
     camel = name if name[:1].isupper() else "".join(part.title() for part in name.split("_"))
-    method = getattr(mapper, "Set" + camel, None)
-    if method is None:
-        raise TypeError("vtkice.pyvista: vtkIceMapper has no parameter %r; the ice's own are %s"
-                        % (name, ", ".join(_look_parameters())))
-    return method
+    for target in (mapper.GetIceProperty(), mapper):
+        method = getattr(target, "Set" + camel, None)
+        if method is not None:
+            return method
+    raise TypeError("vtkice.pyvista: vtkIceMapper has no parameter %r; the ice's own are %s"
+                    % (name, ", ".join(_look_parameters())))
+
+
+def _settable(cls, base):
+    """The Name of each SetName/GetName pair `cls` has beyond `base`."""
+    own = set(dir(cls)) - set(dir(base))
+    return {m[3:] for m in own if re.match(r"Set[A-Z]", m) and hasattr(cls, "Get" + m[3:])}
 
 
 def _look_parameters():
-    """The parameters vtkIceMapper adds to VTK's mapper (those of vtkOpenGLPolyDataMapper work too)."""
-    own = set(dir(vtkIceMapper)) - set(dir(_vtkOpenGLPolyDataMapper))
-    return sorted(m[3:] for m in own
-                  if re.match(r"Set[A-Z]", m) and hasattr(vtkIceMapper, "Get" + m[3:]))
+    """The parameters of the ice's look (vtkIceProperty) and those vtkIceMapper adds to VTK's
+    mapper (those of vtkOpenGLPolyDataMapper work too)."""
+    return sorted(_settable(vtkIceProperty, _vtkObject) |
+                  _settable(vtkIceMapper, _vtkOpenGLPolyDataMapper))
 
 
 def ice_pass(plotter):
@@ -90,8 +99,9 @@ def ice_pass(plotter):
 def add_ice(plotter, mesh, name=None, pickable=True, dynamic_environment=False, **look):
     """Adds `mesh` to `plotter` as ice and returns its actor (a pyvista.Actor).
 
-    `mesh` is any PyVista or VTK data set (its surface is used); `look` sets vtkIceMapper's
-    parameters by name, e.g. ``NumberOfCracks=4`` or ``number_of_cracks=4``,
+    `mesh` is any PyVista or VTK data set (its surface is used); `look` sets the ice's
+    parameters by name, those of the look on the mapper's vtkIceProperty and those of the drawing
+    on the mapper, e.g. ``NumberOfCracks=4`` or ``number_of_cracks=4``,
     ``IceColor=(0.8, 0.9, 1.0)``, ``TwoSidedRefraction=False``. An unknown name raises TypeError
     listing the parameters. The ice reflects and refracts the renderer's environment texture
     (``plotter.renderer.SetEnvironmentTexture``); with ``dynamic_environment=True`` the plotter's

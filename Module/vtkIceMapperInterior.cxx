@@ -1,0 +1,120 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkIceMapper's interior as vtkIcePass and its sub-passes ask for it: the paper's crack and air
+// draws, and the screen-space interior's records and uniforms.
+#include "vtkIceMapper.h"
+
+#include "vtkIceInterior.h"
+#include "vtkIceInteriorLook.h"
+#include "vtkIceInteriorTable.h"
+#include "vtkIcePropertyUniforms.h"
+
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::DrawPaperCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
+{
+  const int view = this->DebugView;
+  const bool debugCracks =
+    view == vtkIceMapper::DebugCracksUnclipped || view == vtkIceMapper::DebugCracksClipped;
+  const bool otherDebug = view == vtkIceMapper::DebugFrontDepth ||
+    view == vtkIceMapper::DebugBackDepth || view == vtkIceMapper::DebugAir;
+  if (otherDebug || (!overlay && (!this->CracksPerturbRefraction || debugCracks)) ||
+    (overlay && this->UsesScreenInterior()))
+  {
+    return;
+  }
+  vtkPolyData* geometry = this->GetCrackGeometry();
+  if (!geometry || geometry->GetNumberOfPolys() == 0)
+  {
+    return;
+  }
+  const bool unclipped = view == vtkIceMapper::DebugCracksUnclipped;
+  vtkIceInterior::CrackLook look;
+  look.ClipToInterval = this->UsableCrackClipping() == vtkIceMapper::DepthInterval && !unclipped;
+  look.Debug = debugCracks;
+  look.Unclipped = unclipped;
+  look.Intensity = this->GetIceProperty()->GetCrackIntensity();
+  look.BumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
+  this->HelpersSawPass = true;
+  this->Interior->DrawCracks(ren, actor, look, overlay);
+  ++this->NumberOfCrackDraws;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::DrawPaperAir(vtkRenderer* ren, vtkActor* actor)
+{
+  const int view = this->DebugView;
+  const bool debugAir = view == vtkIceMapper::DebugAir;
+  vtkIceProperty* look = this->GetIceProperty();
+  if (look->GetNumberOfAirPlanes() == 0 || (view != vtkIceMapper::DebugOff && !debugAir) ||
+    this->UsesScreenInterior())
+  {
+    return;
+  }
+  vtkPolyData* input = this->GetInput();
+  if (!input || !this->PrepareInput(input))
+  {
+    return;
+  }
+  this->HelpersSawPass = true;
+  double bounds[6];
+  this->GetLookBounds(bounds);
+  this->Interior->DrawAir(ren, actor, this->PreparedInput, bounds, look->GetNumberOfAirPlanes(),
+    look->GetAirSeed(), look->GetMilkiness(), debugAir);
+}
+
+//------------------------------------------------------------------------------
+const vtkIceInteriorTable* vtkIceMapper::BeginScreenInterior(
+  vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program)
+{
+  vtkPolyData* input = this->GetInput();
+  if (!input || !this->PrepareInput(input))
+  {
+    return nullptr;
+  }
+  this->SetCameraUniforms(program, ren, actor);
+  vtkIcePropertyUniforms::Set(this->GetIceProperty(), program);
+  this->BindEnvironment(ren, actor);
+  this->SetEnvironmentUniforms(program);
+  this->PrepareInterior(ren, actor, program);
+  return this->InteriorTable.get();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::EndScreenInterior(vtkRenderer* ren)
+{
+  this->FinishInterior(ren);
+  this->UnbindEnvironment(ren);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program)
+{
+  if (!this->InteriorPrepared)
+  {
+    vtkIceInteriorTable::Placement placement;
+    this->GetLookBounds(placement.Bounds);
+    placement.Extent = this->InputExtent();
+    placement.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
+      : this->DebugView == DebugAir                         ? vtkIceInteriorLook::DebugAir
+                                                            : vtkIceInteriorLook::DebugNone;
+    placement.Flat = this->InputFlat;
+    this->InteriorTable->Prepare(ren, act, this->PreparedInput, this->IceProperty, placement,
+      this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
+    this->InteriorPrepared = true;
+  }
+  this->InteriorTable->SetUniforms(program);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::FinishInterior(vtkRenderer* ren)
+{
+  if (this->InteriorPrepared)
+  {
+    this->InteriorTable->Finish(ren);
+    this->InteriorPrepared = false;
+  }
+}
