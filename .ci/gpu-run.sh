@@ -57,7 +57,7 @@ mkdir -p /tmp/gt
 pass=0
 fail=""
 # TestIceOpticsFunctions compiles the GLSL files of this checkout.
-export VTKICE_GLSL_DIR=$REPO/Module/glsl
+export VTKICE_GLSL_DIR=$REPO/Module/Rendering/glsl
 while IFS=$'\t' read -r -a fields; do
   name=${fields[0]}
   [ "$(elapsed)" -lt 540 ] || { echo "(out of time before $name)"; break; }

@@ -31,7 +31,7 @@ const char* const Usage =
 int IceBench::Fail(const std::string& message, int code)
 {
   // Arguments and file names are echoed: terminal escapes in them are not passed on.
-  std::cerr << "ice-bench: " << IceModelFile::Printable(message, 2000) << "\n";
+  std::cerr << "ice-bench: " << vtkIceModelFileChecks::Printable(message, 2000) << "\n";
   return code;
 }
 

@@ -47,7 +47,7 @@ void OnSignal(int signal)
 // Names in messages are made printable: a file name may hold terminal escapes.
 std::string Quote(const fs::path& path)
 {
-  return "'" + IceModelFile::Printable(path.string()) + "'";
+  return "'" + vtkIceModelFileChecks::Printable(path.string()) + "'";
 }
 
 std::string SystemError(int error)

@@ -150,9 +150,9 @@ std::string DropShortPointArrays(vtkPolyData* output)
     if (array && array->GetNumberOfTuples() < points)
     {
       dropped += std::string(dropped.empty() ? "" : "; ") + "point array '" +
-        IceModelFile::Printable(array->GetName() ? array->GetName() : "(unnamed)") + "' (" +
-        std::to_string(array->GetNumberOfTuples()) + " values for " + std::to_string(points) +
-        " points)";
+        vtkIceModelFileChecks::Printable(array->GetName() ? array->GetName() : "(unnamed)") +
+        "' (" + std::to_string(array->GetNumberOfTuples()) + " values for " +
+        std::to_string(points) + " points)";
       pointData->RemoveArray(a);
     }
   }
@@ -218,10 +218,10 @@ bool UpdateQuietly(vtkAlgorithm* algorithm, std::string& error)
   const std::string printed = held.Release();
   vtkLogger::SetStderrVerbosity(verbosity);
   vtkOutputWindow::SetInstance(previous);
-  error = IceModelFile::Printable(capture->FirstMessage);
+  error = vtkIceModelFileChecks::Printable(capture->FirstMessage);
   if (error.empty() && !printed.empty())
   {
-    std::fputs(IceModelFile::Printable(printed, 4096).c_str(), stderr);
+    std::fputs(vtkIceModelFileChecks::Printable(printed, 4096).c_str(), stderr);
     std::fputs("\n", stderr);
   }
   return error.empty();

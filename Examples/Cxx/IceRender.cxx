@@ -50,9 +50,9 @@ int main(int argc, char* argv[])
     {
       pass->SetCubeMapPass(cubeMaps);
     }
-    const IceLook::Target target{ mapper, pass, cubeMaps, camera };
-    IceLook::ApplyAll(target, options.Look);
-    std::cout << IceLook::WritePreset(target, options.CameraGiven);
+    const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
+    vtkIceLookTable::ApplyAll(target, options.Look);
+    std::cout << vtkIceLookTable::WritePreset(target, options.CameraGiven);
     return std::cout.flush() ? 0 : Fail("cannot write to standard output", 1);
   }
 
@@ -65,8 +65,8 @@ int main(int argc, char* argv[])
   }
   if (!warning.empty())
   {
-    std::cerr << "ice-render: model '" << IceModelFile::Printable(options.Model) << "': " << warning
-              << "\n";
+    std::cerr << "ice-render: model '" << vtkIceModelFileChecks::Printable(options.Model)
+              << "': " << warning << "\n";
   }
   vtkSmartPointer<vtkTexture> environment = IceScene::LoadEnvironment(options.Environment, error);
   if (!environment)
@@ -104,13 +104,13 @@ int main(int argc, char* argv[])
   vtkIcePass* pass = vtkIcePass::SafeDownCast(renderer->GetPass());
   vtkNew<vtkIceCubeMapPass> spareCubeMaps; // for a static scene that asks for the cube map
   vtkIceCubeMapPass* cubeMaps = pass->GetCubeMapPass() ? pass->GetCubeMapPass() : spareCubeMaps;
-  const IceLook::Target target{ vtkIceMapper::SafeDownCast(ice->GetMapper()), pass, cubeMaps,
-    renderer->GetActiveCamera() };
+  const vtkIceLookTable::Target target{ vtkIceMapper::SafeDownCast(ice->GetMapper()), pass,
+    cubeMaps, renderer->GetActiveCamera() };
   if (options.Fit)
   {
     renderer->ResetCamera(ice->GetBounds());
   }
-  IceLook::ApplyAll(target, options.Look);
+  vtkIceLookTable::ApplyAll(target, options.Look);
   renderer->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;

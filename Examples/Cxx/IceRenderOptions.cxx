@@ -74,11 +74,11 @@ bool ParseInteger(const std::string& text, int low, int high, int& value)
 }
 
 // The default preset's settings; empty where it cannot be read (the library's defaults then).
-IceLook::Assignments DefaultLook()
+vtkIceLookTable::Assignments DefaultLook()
 {
-  IceLook::Assignments look;
+  vtkIceLookTable::Assignments look;
   const std::string path = FindPreset(VTKICE_DEFAULT_PRESET);
-  if (path.empty() || !IceLook::ReadPreset(path, look).empty())
+  if (path.empty() || !vtkIceLookTable::ReadPreset(path, look).empty())
   {
     look.clear();
   }
@@ -88,34 +88,34 @@ IceLook::Assignments DefaultLook()
 void PrintUsage()
 {
   std::cout << Usage;
-  const IceLook::Assignments look = DefaultLook();
-  for (const IceLook::Setting& setting : IceLook::Settings())
+  const vtkIceLookTable::Assignments look = DefaultLook();
+  for (const vtkIceLookTable::Setting& setting : vtkIceLookTable::Settings())
   {
     std::string syntax = std::string("--") + setting.Name;
     switch (setting.Type)
     {
-      case IceLook::Kind::Number:
-      case IceLook::Kind::Integer:
-        syntax += " " + IceLook::Range(setting.Name);
+      case vtkIceLookTable::Kind::Number:
+      case vtkIceLookTable::Kind::Integer:
+        syntax += " " + vtkIceLookTable::Range(setting.Name);
         break;
-      case IceLook::Kind::Switch:
+      case vtkIceLookTable::Kind::Switch:
         syntax += ", --no-" + std::string(setting.Name);
         break;
-      case IceLook::Kind::Choice:
+      case vtkIceLookTable::Kind::Choice:
       {
         std::string names;
-        for (const std::string& n : IceLook::Choices(setting.Name))
+        for (const std::string& n : vtkIceLookTable::Choices(setting.Name))
         {
           names += (names.empty() ? "" : "|") + n;
         }
         syntax += " " + names;
         break;
       }
-      case IceLook::Kind::Vector:
+      case vtkIceLookTable::Kind::Vector:
         syntax += " X,Y,Z";
         break;
     }
-    std::string initial = IceLook::Default(setting.Name);
+    std::string initial = vtkIceLookTable::Default(setting.Name);
     for (const auto& assignment : look)
     {
       if (assignment.first == setting.Name)
@@ -137,10 +137,10 @@ std::vector<std::string> OptionNames()
 {
   std::vector<std::string> names = { "model", "env", "size", "out", "static", "interactive",
     "turntable", "rate", "preset", "print-preset", "fit", "backend", "help", "one-sided" };
-  for (const IceLook::Setting& setting : IceLook::Settings())
+  for (const vtkIceLookTable::Setting& setting : vtkIceLookTable::Settings())
   {
     names.push_back(setting.Name);
-    if (setting.Type == IceLook::Kind::Switch)
+    if (setting.Type == vtkIceLookTable::Kind::Switch)
     {
       names.push_back(std::string("no-") + setting.Name);
     }
@@ -189,8 +189,8 @@ std::string Suggestion(const std::string& arg)
     const std::vector<std::string> names = OptionNames();
     const std::vector<std::string> valued = { "model", "env", "size", "out", "backend", "preset",
       "turntable", "rate" };
-    const IceLook::Setting* setting = IceLook::Find(name);
-    if ((setting && setting->Type != IceLook::Kind::Switch) ||
+    const vtkIceLookTable::Setting* setting = vtkIceLookTable::Find(name);
+    if ((setting && setting->Type != vtkIceLookTable::Kind::Switch) ||
       std::find(valued.begin(), valued.end(), name) != valued.end())
     {
       return " (the value follows a space: --" + name + " " + typed.substr(equals + 1) + ")";
@@ -226,7 +226,7 @@ bool IsFile(const std::string& path)
 int Fail(const std::string& message, int code)
 {
   // Arguments and file names are echoed: terminal escapes in them are not passed on.
-  std::cerr << "ice-render: " << IceModelFile::Printable(message, 2000) << "\n";
+  std::cerr << "ice-render: " << vtkIceModelFileChecks::Printable(message, 2000) << "\n";
   return code;
 }
 
@@ -265,8 +265,8 @@ std::string FindPreset(const std::string& preset)
 //------------------------------------------------------------------------------
 int Parse(int argc, char* argv[], Options& options)
 {
-  IceLook::Assignments preset = DefaultLook();
-  IceLook::Assignments given;
+  vtkIceLookTable::Assignments preset = DefaultLook();
+  vtkIceLookTable::Assignments given;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -282,13 +282,14 @@ int Parse(int argc, char* argv[], Options& options)
     // Settings of the look and the camera.
     const std::string name = arg.compare(0, 2, "--") == 0 ? arg.substr(2) : std::string();
     const bool negated = name.compare(0, 3, "no-") == 0;
-    const IceLook::Setting* setting = IceLook::Find(negated ? name.substr(3) : name);
+    const vtkIceLookTable::Setting* setting =
+      vtkIceLookTable::Find(negated ? name.substr(3) : name);
     if (arg == "--one-sided")
     {
       given.emplace_back("two-sided", "off");
       continue;
     }
-    if (setting && setting->Type == IceLook::Kind::Switch)
+    if (setting && setting->Type == vtkIceLookTable::Kind::Switch)
     {
       given.emplace_back(setting->Name, negated ? "off" : "on");
       continue;
@@ -299,7 +300,7 @@ int Parse(int argc, char* argv[], Options& options)
       {
         return Fail("option " + arg + " needs a value (see --help)", 2);
       }
-      const std::string problem = IceLook::Check({ { setting->Name, text } });
+      const std::string problem = vtkIceLookTable::Check({ { setting->Name, text } });
       if (!problem.empty())
       {
         // "bad NAME ..." as an option.
@@ -375,14 +376,14 @@ int Parse(int argc, char* argv[], Options& options)
             2);
         }
         preset.clear();
-        const std::string problem = IceLook::ReadPreset(path, preset);
+        const std::string problem = vtkIceLookTable::ReadPreset(path, preset);
         if (!problem.empty())
         {
           return Fail(problem, 2);
         }
         for (const auto& assignment : preset)
         {
-          if (IceLook::Find(assignment.first)->Camera)
+          if (vtkIceLookTable::Find(assignment.first)->Camera)
           {
             options.CameraGiven.push_back(assignment.first);
           }

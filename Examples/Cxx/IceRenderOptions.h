@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// ice-render's command line: what to render, where, and the look (IceLook's settings, presets).
+// ice-render's command line: what to render, where, and the look (vtkIceLookTable's settings,
+// presets).
 #ifndef IceRenderOptions_h
 #define IceRenderOptions_h
 
@@ -26,7 +27,7 @@ struct Options
   int Turntable = 0;         // frames around the model; 0: one image
   double TurntableRate = 24; // frames per second of the video
   // The look: the preset's settings, then the command line's (which override them).
-  IceLook::Assignments Look;
+  vtkIceLookTable::Assignments Look;
   std::vector<std::string> CameraGiven; // camera settings given, for --print-preset
 };
 

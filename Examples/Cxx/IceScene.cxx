@@ -98,7 +98,7 @@ vtkSmartPointer<vtkAlgorithm> ModelReader(const std::string& path, std::string& 
   }
   else
   {
-    error = "unknown model '" + IceModelFile::Printable(path) +
+    error = "unknown model '" + vtkIceModelFileChecks::Printable(path) +
       "' (use teapot, block, sphere or a .vtp, .vtk, .stl, .obj or .ply file)";
   }
   return reader;
@@ -257,13 +257,13 @@ vtkSmartPointer<vtkPolyData> LoadModel(
     {
       return nullptr;
     }
-    error = IceModelFile::CheckFile(model);
+    error = vtkIceModelFileChecks::CheckFile(model);
     if (!error.empty())
     {
       return nullptr;
     }
   }
-  const std::string name = IceModelFile::Printable(model);
+  const std::string name = vtkIceModelFileChecks::Printable(model);
   // Files are read in a child process: VTK's readers crash on some broken files.
   vtkSmartPointer<vtkPolyData> output;
   if (file)

@@ -79,7 +79,7 @@ IceViewer::~IceViewer()
 }
 
 //------------------------------------------------------------------------------
-void IceViewer::Setup(const IceLook::Target& target, vtkRenderer* renderer)
+void IceViewer::Setup(const vtkIceLookTable::Target& target, vtkRenderer* renderer)
 {
   this->Target = target;
   this->Renderer = renderer;
@@ -102,7 +102,7 @@ void IceViewer::Setup(const IceLook::Target& target, vtkRenderer* renderer)
   for (auto setting : { std::make_pair("cracks", &this->Cracks), std::make_pair("air", &this->Air),
          std::make_pair("bumps", &this->Bumps) })
   {
-    const std::string value = IceLook::Value(target, setting.first);
+    const std::string value = vtkIceLookTable::Value(target, setting.first);
     if (std::stod(value) != 0.0)
     {
       *setting.second = value;
@@ -184,7 +184,7 @@ void IceViewer::UpdateLegend()
     text << key.Code << "  " << key.What;
     if (key.Setting)
     {
-      text << ": " << IceLook::Value(this->Target, key.Setting);
+      text << ": " << vtkIceLookTable::Value(this->Target, key.Setting);
     }
     text << "\n";
   }
@@ -196,34 +196,35 @@ void IceViewer::UpdateLegend()
 //------------------------------------------------------------------------------
 void IceViewer::Toggle(const std::string& name)
 {
-  IceLook::Apply(this->Target, name, IceLook::Value(this->Target, name) == "on" ? "off" : "on");
+  vtkIceLookTable::Apply(
+    this->Target, name, vtkIceLookTable::Value(this->Target, name) == "on" ? "off" : "on");
 }
 
 //------------------------------------------------------------------------------
 void IceViewer::OffOrBack(const std::string& name, std::string& remembered)
 {
-  const std::string value = IceLook::Value(this->Target, name);
+  const std::string value = vtkIceLookTable::Value(this->Target, name);
   if (std::stod(value) != 0.0)
   {
     remembered = value;
-    IceLook::Apply(this->Target, name, "0");
+    vtkIceLookTable::Apply(this->Target, name, "0");
   }
   else
   {
-    IceLook::Apply(this->Target, name, remembered);
+    vtkIceLookTable::Apply(this->Target, name, remembered);
   }
 }
 
 //------------------------------------------------------------------------------
 void IceViewer::Cycle(const std::string& name)
 {
-  const std::vector<std::string> names = IceLook::Choices(name);
-  const std::string current = IceLook::Value(this->Target, name);
+  const std::vector<std::string> names = vtkIceLookTable::Choices(name);
+  const std::string current = vtkIceLookTable::Value(this->Target, name);
   for (size_t i = 0; i < names.size(); ++i)
   {
     if (names[i] == current)
     {
-      IceLook::Apply(this->Target, name, names[(i + 1) % names.size()]);
+      vtkIceLookTable::Apply(this->Target, name, names[(i + 1) % names.size()]);
       return;
     }
   }
@@ -233,15 +234,15 @@ void IceViewer::Cycle(const std::string& name)
 void IceViewer::Step(const std::string& name, double delta)
 {
   // Within the library's range: a step past an end stops at it.
-  const std::string range = IceLook::Range(name);
+  const std::string range = vtkIceLookTable::Range(name);
   double low = 0.0;
   double high = 0.0;
   std::sscanf(range.c_str(), "[%lf, %lf]", &low, &high);
-  const double value = std::stod(IceLook::Value(this->Target, name)) + delta;
+  const double value = std::stod(vtkIceLookTable::Value(this->Target, name)) + delta;
   std::ostringstream text;
   text.precision(10);
   text << std::min(std::max(value, low), high);
-  IceLook::Apply(this->Target, name, text.str());
+  vtkIceLookTable::Apply(this->Target, name, text.str());
 }
 
 //------------------------------------------------------------------------------
@@ -323,7 +324,7 @@ void IceViewer::Save()
   std::string problem = IceOutputFile::WriteImage(base + ".png", grab->GetOutput());
   if (problem.empty())
   {
-    problem = IceOutputFile::Write(base + ".ice", IceLook::WritePreset(this->Target, {}));
+    problem = IceOutputFile::Write(base + ".ice", vtkIceLookTable::WritePreset(this->Target, {}));
   }
   this->LastSaved = problem.empty() ? base + ".png " + base + ".ice" : problem;
 }

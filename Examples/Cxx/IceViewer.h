@@ -22,7 +22,7 @@ public:
   vtkTypeMacro(IceViewer, vtkInteractorStyleTrackballCamera);
 
   // What the keys change, and the renderer that shows the legend.
-  void Setup(const IceLook::Target& target, vtkRenderer* renderer);
+  void Setup(const vtkIceLookTable::Target& target, vtkRenderer* renderer);
 
   // Where the save key writes ice-view-N.png and ice-view-N.ice (default: the current folder).
   void SetOutputDirectory(const std::string& directory) { this->OutputDirectory = directory; }
@@ -70,7 +70,7 @@ protected:
   void Cycle(const std::string& name);
   void ShowFrameTime();
 
-  IceLook::Target Target;
+  vtkIceLookTable::Target Target;
   vtkRenderer* Renderer = nullptr;
   vtkNew<vtkTextActor> Legend;
   vtkNew<vtkTextActor> FrameTime;

@@ -16,12 +16,13 @@ void vtkIceModelFile::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 std::string vtkIceModelFile::CheckFile(const char* path)
 {
-  return path ? IceModelFile::CheckFile(path) : std::string("no model file named");
+  return path ? vtkIceModelFileChecks::CheckFile(path) : std::string("no model file named");
 }
 
 //------------------------------------------------------------------------------
 std::string vtkIceModelFile::Printable(const char* text, int limit)
 {
-  return text ? IceModelFile::Printable(text, limit > 0 ? static_cast<std::size_t>(limit) : 0)
-              : std::string();
+  return text
+    ? vtkIceModelFileChecks::Printable(text, limit > 0 ? static_cast<std::size_t>(limit) : 0)
+    : std::string();
 }

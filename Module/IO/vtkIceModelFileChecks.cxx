@@ -12,7 +12,7 @@
 #include <sstream>
 #include <vector>
 
-namespace IceModelFile
+namespace vtkIceModelFileChecks
 {
 namespace
 {

@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <string>
 
-namespace IceModelFile
+namespace vtkIceModelFileChecks
 {
 // Whether `path` is a binary or ASCII STL file whose size and end agree with its header.
 // Returns "" or the problem in one sentence.

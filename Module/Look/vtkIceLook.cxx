@@ -13,14 +13,14 @@ vtkStandardNewMacro(vtkIceLook);
 
 namespace
 {
-const IceLook::Setting* At(int i)
+const vtkIceLookTable::Setting* At(int i)
 {
-  const auto& settings = IceLook::Settings();
+  const auto& settings = vtkIceLookTable::Settings();
   return i >= 0 && i < static_cast<int>(settings.size()) ? &settings[i] : nullptr;
 }
 
 // The table's settings act on all four without checking them: refuse a scene that lacks one.
-bool Complete(const IceLook::Target& target)
+bool Complete(const vtkIceLookTable::Target& target)
 {
   return target.Mapper && target.Pass && target.CubeMaps && target.Camera;
 }
@@ -38,7 +38,7 @@ void vtkIceLook::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 int vtkIceLook::GetNumberOfSettings()
 {
-  return static_cast<int>(IceLook::Settings().size());
+  return static_cast<int>(vtkIceLookTable::Settings().size());
 }
 
 //------------------------------------------------------------------------------
@@ -57,29 +57,29 @@ int vtkIceLook::FindSetting(const char* name)
 //------------------------------------------------------------------------------
 const char* vtkIceLook::GetName(int i)
 {
-  const IceLook::Setting* setting = At(i);
+  const vtkIceLookTable::Setting* setting = At(i);
   return setting ? setting->Name : nullptr;
 }
 
 //------------------------------------------------------------------------------
 const char* vtkIceLook::GetKind(int i)
 {
-  const IceLook::Setting* setting = At(i);
+  const vtkIceLookTable::Setting* setting = At(i);
   if (!setting)
   {
     return nullptr;
   }
   switch (setting->Type)
   {
-    case IceLook::Kind::Number:
+    case vtkIceLookTable::Kind::Number:
       return "number";
-    case IceLook::Kind::Integer:
+    case vtkIceLookTable::Kind::Integer:
       return "integer";
-    case IceLook::Kind::Switch:
+    case vtkIceLookTable::Kind::Switch:
       return "switch";
-    case IceLook::Kind::Choice:
+    case vtkIceLookTable::Kind::Choice:
       return "choice";
-    case IceLook::Kind::Vector:
+    case vtkIceLookTable::Kind::Vector:
       return "vector";
   }
   return nullptr;
@@ -88,21 +88,21 @@ const char* vtkIceLook::GetKind(int i)
 //------------------------------------------------------------------------------
 const char* vtkIceLook::GetHelp(int i)
 {
-  const IceLook::Setting* setting = At(i);
+  const vtkIceLookTable::Setting* setting = At(i);
   return setting ? setting->Help : nullptr;
 }
 
 //------------------------------------------------------------------------------
 bool vtkIceLook::IsCameraSetting(int i)
 {
-  const IceLook::Setting* setting = At(i);
+  const vtkIceLookTable::Setting* setting = At(i);
   return setting && setting->Camera;
 }
 
 //------------------------------------------------------------------------------
 const char* vtkIceLook::GetSynonymOf(int i)
 {
-  const IceLook::Setting* setting = At(i);
+  const vtkIceLookTable::Setting* setting = At(i);
   return setting ? setting->SynonymOf : nullptr;
 }
 
@@ -110,20 +110,20 @@ const char* vtkIceLook::GetSynonymOf(int i)
 double vtkIceLook::GetMinimum(int i)
 {
   double low = 0.0, high = 0.0;
-  return At(i) && IceLook::Bounds(At(i)->Name, low, high) ? low : 0.0;
+  return At(i) && vtkIceLookTable::Bounds(At(i)->Name, low, high) ? low : 0.0;
 }
 
 //------------------------------------------------------------------------------
 double vtkIceLook::GetMaximum(int i)
 {
   double low = 0.0, high = 0.0;
-  return At(i) && IceLook::Bounds(At(i)->Name, low, high) ? high : 0.0;
+  return At(i) && vtkIceLookTable::Bounds(At(i)->Name, low, high) ? high : 0.0;
 }
 
 //------------------------------------------------------------------------------
 int vtkIceLook::GetNumberOfChoices(int i)
 {
-  return At(i) ? static_cast<int>(IceLook::Choices(At(i)->Name).size()) : 0;
+  return At(i) ? static_cast<int>(vtkIceLookTable::Choices(At(i)->Name).size()) : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -134,46 +134,46 @@ const char* vtkIceLook::GetChoice(int i, int choice)
     return nullptr;
   }
   // The table's own strings: they live as long as the library.
-  return IceLook::Choices(At(i)->Name)[choice].c_str();
+  return vtkIceLookTable::Choices(At(i)->Name)[choice].c_str();
 }
 
 //------------------------------------------------------------------------------
 std::string vtkIceLook::GetDefault(int i)
 {
-  return At(i) ? IceLook::Default(At(i)->Name) : std::string();
+  return At(i) ? vtkIceLookTable::Default(At(i)->Name) : std::string();
 }
 
 //------------------------------------------------------------------------------
 std::string vtkIceLook::Apply(vtkIceMapper* mapper, vtkIcePass* pass, vtkIceCubeMapPass* cubeMaps,
   vtkCamera* camera, const char* name, const char* value)
 {
-  const IceLook::Target target{ mapper, pass, cubeMaps, camera };
+  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
   if (!Complete(target))
   {
     return NoScene;
   }
-  return IceLook::Apply(target, name ? name : "", value ? value : "");
+  return vtkIceLookTable::Apply(target, name ? name : "", value ? value : "");
 }
 
 //------------------------------------------------------------------------------
 std::string vtkIceLook::GetValue(vtkIceMapper* mapper, vtkIcePass* pass,
   vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, const char* name)
 {
-  const IceLook::Target target{ mapper, pass, cubeMaps, camera };
-  return Complete(target) && name ? IceLook::Value(target, name) : std::string();
+  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
+  return Complete(target) && name ? vtkIceLookTable::Value(target, name) : std::string();
 }
 
 //------------------------------------------------------------------------------
 std::string vtkIceLook::ApplyPreset(vtkIceMapper* mapper, vtkIcePass* pass,
   vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, const char* path)
 {
-  const IceLook::Target target{ mapper, pass, cubeMaps, camera };
+  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
   if (!Complete(target))
   {
     return NoScene;
   }
-  IceLook::Assignments assignments;
-  const std::string problem = IceLook::ReadPreset(path ? path : "", assignments);
+  vtkIceLookTable::Assignments assignments;
+  const std::string problem = vtkIceLookTable::ReadPreset(path ? path : "", assignments);
   // ReadPreset checked every line on a scratch scene, so applying cannot stop half-way.
-  return problem.empty() ? IceLook::ApplyAll(target, assignments) : problem;
+  return problem.empty() ? vtkIceLookTable::ApplyAll(target, assignments) : problem;
 }

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <fstream>
 
-namespace IceLook
+namespace vtkIceLookTable
 {
 namespace
 {

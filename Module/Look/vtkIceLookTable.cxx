@@ -15,7 +15,7 @@
 #include <map>
 #include <sstream>
 
-namespace IceLook
+namespace vtkIceLookTable
 {
 namespace
 {

@@ -19,7 +19,7 @@ class vtkIceCubeMapPass;
 class vtkIceMapper;
 class vtkIcePass;
 
-namespace IceLook
+namespace vtkIceLookTable
 {
 // What the settings act on. CubeMaps is the scene's cube-map pass, set on Pass while the dynamic
 // environment is on.

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Writes test images with OpenImageIO, behind an interface without C++ library types: the tests
 // built against a `vtk` wheel use its old libstdc++ ABI, OpenImageIO the new one (as
-// Module/vtkIceImageFile.h does for reading).
+// Module/IO/vtkIceImageFile.h does for reading).
 #ifndef IceTestImageWriter_h
 #define IceTestImageWriter_h
 

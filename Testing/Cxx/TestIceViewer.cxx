@@ -58,7 +58,7 @@ int TestIceViewer(int, char*[])
   vtkNew<vtkIceCubeMapPass> cubeMaps;
   cubeMaps->SetFaceSize(64);
   vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(ice->GetMapper());
-  const IceLook::Target target{ mapper, pass, cubeMaps, renderer->GetActiveCamera() };
+  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, renderer->GetActiveCamera() };
 
   vtkNew<vtkRenderWindow> window;
   window->SetSize(240, 180);
@@ -178,22 +178,22 @@ int TestIceViewer(int, char*[])
   ok = Expect(Exists(base + ".png") && Exists(base + ".ice"),
          "key 's' saved " + viewer->GetLastSaved()) &&
     ok;
-  IceLook::Assignments saved;
-  const std::string problem = IceLook::ReadPreset(base + ".ice", saved);
+  vtkIceLookTable::Assignments saved;
+  const std::string problem = vtkIceLookTable::ReadPreset(base + ".ice", saved);
   vtkNew<vtkIceMapper> fresh;
   vtkNew<vtkIcePass> freshPass;
   vtkNew<vtkIceCubeMapPass> freshCubeMaps;
   vtkNew<vtkCamera> freshCamera;
-  const IceLook::Target again{ fresh, freshPass, freshCubeMaps, freshCamera };
-  const std::string applied = IceLook::ApplyAll(again, saved);
+  const vtkIceLookTable::Target again{ fresh, freshPass, freshCubeMaps, freshCamera };
+  const std::string applied = vtkIceLookTable::ApplyAll(again, saved);
   bool same = problem.empty() && applied.empty();
-  for (const IceLook::Setting& setting : IceLook::Settings())
+  for (const vtkIceLookTable::Setting& setting : vtkIceLookTable::Settings())
   {
     if (!setting.Camera &&
-      IceLook::Value(again, setting.Name) != IceLook::Value(target, setting.Name))
+      vtkIceLookTable::Value(again, setting.Name) != vtkIceLookTable::Value(target, setting.Name))
     {
-      std::cout << "     " << setting.Name << ": " << IceLook::Value(again, setting.Name)
-                << " instead of " << IceLook::Value(target, setting.Name) << "\n";
+      std::cout << "     " << setting.Name << ": " << vtkIceLookTable::Value(again, setting.Name)
+                << " instead of " << vtkIceLookTable::Value(target, setting.Name) << "\n";
       same = false;
     }
   }

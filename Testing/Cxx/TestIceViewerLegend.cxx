@@ -80,8 +80,8 @@ int TestIceViewerLegend(int, char*[])
   options.DynamicEnvironment = false;
   vtkActor* ice = IceScene::Populate(renderer, model, environment, options);
   vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(ice->GetMapper());
-  const IceLook::Target target{ mapper, vtkIcePass::SafeDownCast(renderer->GetPass()), nullptr,
-    renderer->GetActiveCamera() };
+  const vtkIceLookTable::Target target{ mapper, vtkIcePass::SafeDownCast(renderer->GetPass()),
+    nullptr, renderer->GetActiveCamera() };
 
   vtkNew<vtkRenderWindow> window;
   window->SetSize(1024, 768);

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// libFuzzer harness: ice-render's checks of STL and PLY files (IceModelFile), which run before
-// VTK's readers and must answer every file with "" or one sentence. The first byte picks the
+// libFuzzer harness: ice-render's checks of STL and PLY files (vtkIceModelFileChecks), which run
+// before VTK's readers and must answer every file with "" or one sentence. The first byte picks the
 // check; the rest is the file.
 #include "vtkIceModelFileChecks.h"
 
@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   std::fwrite(data + 1, 1, size - 1, file);
   std::fclose(file);
   const std::string problem =
-    data[0] % 2 ? IceModelFile::CheckSTL(path) : IceModelFile::CheckPLY(path);
+    data[0] % 2 ? vtkIceModelFileChecks::CheckSTL(path) : vtkIceModelFileChecks::CheckPLY(path);
   // One sentence, printable.
   if (problem.find('\n') != std::string::npos)
   {

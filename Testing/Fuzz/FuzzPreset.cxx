@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// libFuzzer harness: ice-render's preset files (IceLook::ReadPreset: "NAME = VALUE" lines,
+// libFuzzer harness: ice-render's preset files (vtkIceLookTable::ReadPreset: "NAME = VALUE" lines,
 // checked against the library's ranges before anything is applied). Every file gives either a
 // list of assignments that apply cleanly or one problem, never a fault.
 #include "vtkIceLookTable.h"
@@ -20,8 +20,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   std::fwrite(data, 1, size, file);
   std::fclose(file);
-  IceLook::Assignments assignments;
-  if (IceLook::ReadPreset(path, assignments).empty() && !IceLook::Check(assignments).empty())
+  vtkIceLookTable::Assignments assignments;
+  if (vtkIceLookTable::ReadPreset(path, assignments).empty() &&
+    !vtkIceLookTable::Check(assignments).empty())
   {
     __builtin_trap(); // accepted, then refused
   }

@@ -19,6 +19,7 @@ int main()
   std::cout << mapper->GetClassName() << " eta " << mapper->GetIceProperty()->GetRefractionRatio()
             << ", teapot " << teapot->GetOutput()->GetNumberOfPolys() << " triangles, "
             << reader->GetClassName() << " layout " << reader->GetLayoutAsString()
-            << ", the look's setting eta " << (IceLook::Find("eta") ? "found" : "missing") << "\n";
-  return teapot->GetOutput()->GetNumberOfPolys() > 0 && IceLook::Find("eta") ? 0 : 1;
+            << ", the look's setting eta " << (vtkIceLookTable::Find("eta") ? "found" : "missing")
+            << "\n";
+  return teapot->GetOutput()->GetNumberOfPolys() > 0 && vtkIceLookTable::Find("eta") ? 0 : 1;
 }

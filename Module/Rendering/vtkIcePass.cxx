@@ -54,7 +54,7 @@ namespace
 // any renderer.
 struct vtkIcePickListAccess : vtkRenderer
 {
-  static vtkPropCollection* vtkViewport::*Member() { return &vtkIcePickListAccess::PickFromProps; }
+  static vtkPropCollection* vtkViewport::* Member() { return &vtkIcePickListAccess::PickFromProps; }
 };
 
 vtkPropCollection* PickFromProps(vtkRenderer* renderer)

@@ -337,7 +337,7 @@ protected:
 
   std::map<const vtkOpenGLHelper*, int> ShaderVariantBuilt;
   std::unique_ptr<vtkIceInteriorTable> InteriorTable; // the screen-space interior's records
-  bool InteriorPrepared = false;                       // during a draw
+  bool InteriorPrepared = false;                      // during a draw
 
   // The renderer's environment or the built-in sky, when no pass hands a dynamic cube map.
   std::unique_ptr<vtkIceStaticEnvironment> Environment;

@@ -40,10 +40,9 @@ std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
   using vtkIceShaderSections::Get;
   const int complexity = renderer->GetLightingCount() > 0 ? renderer->GetLightingComplexity() : 0;
   std::string declarations = std::string(rough ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
-    renderer->GetLightingUniforms() +
-    vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") + Get(vtkIceSurfaceFS, "Environment") +
-    "uniform float iceRefractionRatio;\n" + Get(vtkIceScreenInteriorFS, "Tiles") +
-    vtkIceInteriorTable::Declarations() +
+    renderer->GetLightingUniforms() + vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") +
+    Get(vtkIceSurfaceFS, "Environment") + "uniform float iceRefractionRatio;\n" +
+    Get(vtkIceScreenInteriorFS, "Tiles") + vtkIceInteriorTable::Declarations() +
     vtkIceInteriorTable::Functions(complexity, renderer->GetLightingCount()) +
     Get(vtkIceScreenInteriorFS, "Dec");
   std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
@@ -89,8 +88,7 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglDepthFunc(GL_GREATER);
 
-  const std::string source =
-    QuadShader(renderer, mapper->GetIceProperty()->GetRoughness() > 0.0);
+  const std::string source = QuadShader(renderer, mapper->GetIceProperty()->GetRoughness() > 0.0);
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
   if (!quad)
   {
