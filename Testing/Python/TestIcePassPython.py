@@ -73,6 +73,10 @@ def main():
     paper = grab(window)
     mapper.SetInteriorMethodToScreenSpace()
     check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorScreenSpace)
+    # 2, the screen-space interior's value before the single pass went, still means it.
+    mapper.SetInteriorMethod(2)
+    check(mapper.GetInteriorMethod() == vtkice.vtkIceMapper.InteriorScreenSpace,
+          "an old saved 2 is the screen-space interior")
     interior = (mean_difference(two_sided, paper, *box), mean_difference(two_sided, screen, *box),
                 mean_difference(paper, screen, *box))
     print("interior: paper passes %.2f/255, screen space %.2f/255 from the clear ice, %.2f/255 apart"
