@@ -3,7 +3,9 @@
 // The screen-space interior (InteriorScreenSpace) against the single-pass interior it replaced,
 // which evaluated the same look once per fragment in the ice's own shader: its pictures, rendered
 // at aea73f3 (the last commit that had it) on Debian 12's Mesa llvmpipe and reviewed, are the
-// baselines (Testing/Data/Baseline/TestIceScreenInterior/), matched up to the pixels along the
+// baselines (Testing/Data/Baseline/TestIceScreenInterior/; NAME_1.png: the screen-space interior as
+// sid's Mesa renders it, which matched sid's single pass within these bounds at aea73f3's landing,
+// while sid renders the scene 1-3/255 apart from Debian 12), matched up to the pixels along the
 // ice's silhouette (where the single pass shaded fragments whose pixel centre lies outside the ice)
 // and float rounding. One behaviour per case: the default look on the block and the teapot, 128
 // cracks (culled per screen tile), a dynamic cube map, two ice props overlapping (and one of them
@@ -142,51 +144,64 @@ bool Compare(const std::string& name, vtkPolyDataAlgorithm* source, const Setup&
 {
   std::string file = name;
   std::replace(file.begin(), file.end(), ' ', '-');
-  file += ".png";
-  const IceTest::Image single = IceTest::ReadPNG(Baselines + "/" + file);
-  if (single.Width != Width || single.Height != Height)
-  {
-    return IceTest::Expect(false, name + ": a " + std::to_string(Width) + "x" +
-        std::to_string(Height) + " baseline " + Baselines + "/" + file);
-  }
   const IceTest::Image clean = Render(source, vtkIceMapper::InteriorScreenSpace, false, setup, ice);
   const IceTest::Image screen = Render(source, vtkIceMapper::InteriorScreenSpace, true, setup, ice);
   if (clean.RGB.empty() || screen.RGB.empty())
   {
     return IceTest::Expect(false, name + ": rendered without a message");
   }
-  std::vector<double> inside;
-  size_t interiorPixels = 0;
-  size_t outside = 0;
-  for (int y = 0; y < Height; ++y)
+  // The baseline and its alternatives (NAME_1.png, ...: sid's Mesa renders the scene around the
+  // interior differently), as VTK's regression test takes them: one must meet the bounds.
+  std::ostringstream what;
+  bool ok = false;
+  for (int alternative = 0; !ok; ++alternative)
   {
-    for (int x = 0; x < Width; ++x)
+    const std::string path = Baselines + "/" + file +
+      (alternative ? "_" + std::to_string(alternative) : std::string()) + ".png";
+    const IceTest::Image single = IceTest::ReadPNG(path);
+    if (single.Width != Width || single.Height != Height)
     {
-      const int difference = IceTest::PixelDifference(single.At(x, y), screen.At(x, y));
-      const bool interior = IceTest::PixelDifference(clean.At(x, y), single.At(x, y)) > 0;
-      interiorPixels += interior ? 1 : 0;
-      if (interior)
+      if (alternative == 0)
       {
-        inside.push_back(difference);
+        return IceTest::Expect(false,
+          name + ": a " + std::to_string(Width) + "x" + std::to_string(Height) + " baseline " +
+            path);
       }
-      else
+      break;
+    }
+    std::vector<double> inside;
+    size_t interiorPixels = 0;
+    size_t outside = 0;
+    for (int y = 0; y < Height; ++y)
+    {
+      for (int x = 0; x < Width; ++x)
       {
-        outside += difference > 2 ? 1 : 0;
+        const int difference = IceTest::PixelDifference(single.At(x, y), screen.At(x, y));
+        const bool interior = IceTest::PixelDifference(clean.At(x, y), single.At(x, y)) > 0;
+        interiorPixels += interior ? 1 : 0;
+        if (interior)
+        {
+          inside.push_back(difference);
+        }
+        else
+        {
+          outside += difference > 2 ? 1 : 0;
+        }
       }
     }
+    const IceTest::Stats stats = IceTest::Summarize(inside);
+    what.str("");
+    what << name << ": screen-space against single pass (" << path.substr(path.rfind('/') + 1)
+         << ") over " << stats.Count << " pixels the interior changes: mean " << stats.Mean
+         << "/255, p99 " << stats.P99 << "/255, max " << stats.Max << "/255; " << outside
+         << " pixels elsewhere differ by more than 2/255";
+    ok = interiorPixels > 2000 && stats.Mean <= maxMean && stats.P99 <= maxP99 &&
+      outside < 0.002 * Width * Height;
   }
-  const IceTest::Stats stats = IceTest::Summarize(inside);
-  std::ostringstream what;
-  what << name << ": screen-space against single pass over " << stats.Count
-       << " pixels the interior changes: mean " << stats.Mean << "/255, p99 " << stats.P99
-       << "/255, max " << stats.Max << "/255; " << outside
-       << " pixels elsewhere differ by more than 2/255";
-  const bool ok = interiorPixels > 2000 && stats.Mean <= maxMean && stats.P99 <= maxP99 &&
-    outside < 0.002 * Width * Height;
   if (!ok && !Temporary.empty())
   {
-    IceTest::WritePNG(screen, Temporary + "/TestIceScreenInterior-" + file);
-    what << " (render written to " << Temporary << "/TestIceScreenInterior-" << file << ")";
+    IceTest::WritePNG(screen, Temporary + "/TestIceScreenInterior-" + file + ".png");
+    what << " (render written to " << Temporary << "/TestIceScreenInterior-" << file << ".png)";
   }
   return IceTest::Expect(ok, what.str());
 }
