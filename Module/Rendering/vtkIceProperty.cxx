@@ -199,7 +199,7 @@ void vtkIceProperty::DeepCopy(vtkIceProperty* other)
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkIceProperty::ShaderValue> vtkIceProperty::GetShaderValues() const
+std::array<vtkIceProperty::ShaderValue, 7> vtkIceProperty::GetShaderValues() const
 {
   auto scalar = [](const char* name, double value, bool optional) {
     return ShaderValue{ name, 1, { static_cast<float>(value), 0.0f, 0.0f }, optional };

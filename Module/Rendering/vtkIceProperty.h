@@ -24,7 +24,7 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for members
 
-#include <vector> // for GetShaderValues
+#include <array> // for GetShaderValues
 
 class vtkTexture;
 
@@ -322,7 +322,7 @@ public:
     float Value[3];
     bool Optional;
   };
-  std::vector<ShaderValue> GetShaderValues() const;
+  std::array<ShaderValue, 7> GetShaderValues() const; // no allocation: called every draw
 #endif
 
 protected:

@@ -190,10 +190,7 @@ bool CheckImage(int argc, char* argv[], vtkRenderWindow* window)
     {
       break;
     }
-    vtkNew<vtkPNGReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    const Image baseline = FromImageData(reader->GetOutput());
+    const Image baseline = ReadPNG(path);
     if (baseline.Width != rendered.Width || baseline.Height != rendered.Height)
     {
       std::cerr << "Baseline " << path << " is " << baseline.Width << "x" << baseline.Height
