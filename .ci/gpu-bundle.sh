@@ -15,11 +15,13 @@ grep -qx '/.gl/' .git/info/exclude 2>/dev/null || echo /.gl/ >> .git/info/exclud
 grep -qx '/.gpu/' .git/info/exclude 2>/dev/null || echo /.gpu/ >> .git/info/exclude
 rm -rf .gpu/b && mkdir -p .gpu/b/bin .gpu/b/lib .gpu/b/libstdcxx .gpu/stub
 cp "$build"/bin/ice-render "$build"/bin/ice-bench "$build"/bin/IceCxxTests .gpu/b/bin/
-cp -a "$build"/lib/libRenderingIce.so* "$build"/lib/libFiltersIce.so* "$build"/lib/libIOIce.so* \
-  "$build"/lib/libLookIce.so* "$build"/lib/libIceHeadless.so* .gpu/b/lib/
+cp -a "$build"/lib/libRenderingIce.so* "$build"/lib/libRenderingIcePaper.so* \
+  "$build"/lib/libFiltersIce.so* "$build"/lib/libIOIce.so* "$build"/lib/libLookIce.so* \
+  "$build"/lib/libIceHeadless.so* .gpu/b/lib/
 
 # The stub: every OpenImageIO function the project calls, aborting with a message.
-programs=(.gpu/b/bin/* "$build"/lib/libRenderingIce.so.0.1.0 "$build"/lib/libFiltersIce.so.0.1.0
+programs=(.gpu/b/bin/* "$build"/lib/libRenderingIce.so.0.1.0 "$build"/lib/libRenderingIcePaper.so.0.1.0
+  "$build"/lib/libFiltersIce.so.0.1.0
   "$build"/lib/libIOIce.so.0.1.0 "$build"/lib/libLookIce.so.0.1.0)
 {
   echo '.section .note.GNU-stack,"",@progbits'

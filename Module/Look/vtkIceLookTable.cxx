@@ -166,10 +166,24 @@ std::vector<Entry> MakeEntries()
     CrackReflection);
   ICE_MAPPER_CHOICE("interior", "how cracks and air are rendered", InteriorMethod, "paper-passes",
     "screen-space");
-  ICE_MAPPER_CHOICE("crack-clipping", "how cracks are kept inside the ice (paper-passes)",
-    CrackClipping, "depth-interval", "geometry");
-  ICE_MAPPER_SWITCH(
-    "cracks-in-refraction", "cracks bend the refraction like back faces", CracksPerturbRefraction);
+  // The paper's passes' own settings (vtkIcePaperInterior).
+  choice(
+    "crack-clipping", "how cracks are kept inside the ice (paper-passes)",
+    { "depth-interval", "geometry" },
+    [](const Target& t) {
+      return static_cast<double>(t.Mapper->GetPaperInterior()->GetCrackClipping());
+    },
+    [](const Target& t, double v) {
+      t.Mapper->GetPaperInterior()->SetCrackClipping(static_cast<int>(v));
+    });
+  toggle(
+    "cracks-in-refraction", "cracks bend the refraction like back faces",
+    [](const Target& t) {
+      return t.Mapper->GetPaperInterior()->GetCracksPerturbRefraction() ? 1.0 : 0.0;
+    },
+    [](const Target& t, double v) {
+      t.Mapper->GetPaperInterior()->SetCracksPerturbRefraction(v != 0.0);
+    });
   ICE_PROPERTY_INTEGER("air", "number of air-bubble planes", NumberOfAirPlanes);
   number(
     "air-seed", "placement and images of the air", anyLow, anyHigh,

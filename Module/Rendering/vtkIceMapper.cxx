@@ -10,8 +10,8 @@
 #include "vtkIceFrame.h"
 #include "vtkIceGlistening.h"
 #include "vtkIceGlisteningTexture.h"
-#include "vtkIceInterior.h"
 #include "vtkIceInteriorLook.h"
+#include "vtkIceInteriorSources.h"
 #include "vtkIceOptics.h"
 #include "vtkIcePrefilteredEnvironment.h"
 #include "vtkIcePropertyUniforms.h"
@@ -58,7 +58,7 @@ enum ShaderParts
 vtkIceMapper::vtkIceMapper()
   : IceProperty(vtkSmartPointer<vtkIceProperty>::New())
   , InteriorTable(new vtkIceInteriorTable)
-  , Interior(new vtkIceInterior)
+  , Interior(new vtkIceInteriorSources)
   , Environment(new vtkIceStaticEnvironment)
   , Prefiltered(new vtkIcePrefilteredEnvironment)
   , Culling(new vtkIceBackfaceCulling)
@@ -80,6 +80,33 @@ void vtkIceMapper::SetIceProperty(vtkIceProperty* property)
   }
   this->IceProperty = property ? property : vtkSmartPointer<vtkIceProperty>::New().Get();
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkIcePaperInterior* vtkIceMapper::GetPaperInterior()
+{
+  if (!this->PaperInterior)
+  {
+    this->PaperInterior = vtkSmartPointer<vtkIcePaperInterior>::New();
+  }
+  return this->PaperInterior;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetPaperInterior(vtkIcePaperInterior* interior)
+{
+  if (interior && interior == this->PaperInterior)
+  {
+    return;
+  }
+  this->PaperInterior = interior ? interior : vtkSmartPointer<vtkIcePaperInterior>::New().Get();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::CracksPerturbRefraction() const
+{
+  return this->PaperInterior && this->PaperInterior->GetCracksPerturbRefraction();
 }
 
 //------------------------------------------------------------------------------
@@ -161,7 +188,7 @@ int vtkIceMapper::GetFrameNeeds()
   }
   const int view = this->DebugView;
   if (view == DebugFrontDepth || view == DebugBackDepth ||
-    (this->CracksPerturbRefraction && this->IceProperty->GetNumberOfCracks() > 0))
+    (this->CracksPerturbRefraction() && this->IceProperty->GetNumberOfCracks() > 0))
   {
     needs |= vtkIceFrame::NeedsDepthIntervalBeforeScene;
   }
@@ -227,7 +254,10 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   if (this->HelpersSawPass && !frame)
   {
     // The pass is gone from this ice: its cracks and air, drawn only by it, let it go.
-    this->Interior->ForgetRenderPasses();
+    if (this->PaperInterior)
+    {
+      this->PaperInterior->ForgetRenderPasses();
+    }
     this->HelpersSawPass = false;
   }
   this->BindEnvironment(ren, act);
@@ -513,7 +543,8 @@ vtkPolyData* vtkIceMapper::GetCrackGeometry()
   double bounds[6];
   this->GetLookBounds(bounds);
   return this->Interior->UpdateCracks(this->PreparedInput, bounds, cracks,
-    this->IceProperty->GetCrackSeed(), cracks > 0 && this->UsableCrackClipping() == Geometry);
+    this->IceProperty->GetCrackSeed(),
+    cracks > 0 && this->UsableCrackClipping() == vtkIcePaperInterior::Geometry);
 }
 
 //------------------------------------------------------------------------------
@@ -550,14 +581,16 @@ void vtkIceMapper::CheckInputClosure()
 //------------------------------------------------------------------------------
 int vtkIceMapper::UsableCrackClipping()
 {
-  if (this->CrackClipping != Geometry)
+  const int asked = this->PaperInterior ? this->PaperInterior->GetCrackClipping()
+                                        : vtkIcePaperInterior::DepthInterval;
+  if (asked != vtkIcePaperInterior::Geometry)
   {
-    return this->CrackClipping;
+    return asked;
   }
   this->CheckInputClosure();
   if (this->InputOpenEdges == 0)
   {
-    return Geometry;
+    return vtkIcePaperInterior::Geometry;
   }
   if (!this->WarnedOpenInput)
   {
@@ -566,7 +599,7 @@ int vtkIceMapper::UsableCrackClipping()
                        "clipped to the depth interval instead.");
     this->WarnedOpenInput = true;
   }
-  return DepthInterval;
+  return vtkIcePaperInterior::DepthInterval;
 }
 
 //------------------------------------------------------------------------------
@@ -575,6 +608,10 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
   this->Environment->ReleaseGraphicsResources(win);
   this->Prefiltered->ReleaseGraphicsResources(win);
   this->Interior->ReleaseGraphicsResources(win);
+  if (this->PaperInterior)
+  {
+    this->PaperInterior->ReleaseGraphicsResources(win);
+  }
   this->InteriorTable->ReleaseGraphicsResources(win);
   if (this->GlisteningNoise)
   {
@@ -602,10 +639,6 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
   static const char* const interiorMethods[] = { "PaperPasses", "ScreenSpace" };
   os << indent << "InteriorMethod: " << interiorMethods[this->InteriorMethod] << "\n";
-  os << indent
-     << "CrackClipping: " << (this->CrackClipping == Geometry ? "Geometry" : "DepthInterval")
-     << "\n";
-  os << indent << "CracksPerturbRefraction: " << (this->CracksPerturbRefraction ? "On" : "Off")
-     << "\n";
+  os << indent << "PaperInterior: " << this->PaperInterior.Get() << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
 }

@@ -18,36 +18,39 @@
  * normal blends the front normal with the back-face normal found behind each pixel, weighted by
  * BackNormalWeight. Without the pass, or with TwoSidedRefraction off, refraction is one-sided.
  * vtkIcePass also draws the ice's cracks (NumberOfCracks generic crack surfaces placed at random
- * inside, showing only their specular highlights), clipped to the ice either per fragment by its
- * depth interval or once on the CPU (CrackClipping), and its air: NumberOfAirPlanes planes of
+ * inside, showing only their specular highlights) and its air: NumberOfAirPlanes planes of
  * bubble images that make the ice milky (Milkiness). InteriorMethod chooses how: once per pixel
- * along the view ray (default), or the paper's passes. BumpStrength and
+ * along the view ray (default), or the paper's passes (their own settings, such as crack
+ * clipping, on GetPaperInterior(); their drawing in VTKIce::RenderingIcePaper). BumpStrength and
  * BumpScale make the surface bumpy. Air, cracks and bumps are on by default (the paper's full
  * look); set them to 0 for clean optics.
  *
  * The look's parameters (optics, cracks, air, bumps, glistening) are on the mapper's
  * vtkIceProperty, as a vtkActor's are on its vtkProperty: mapper->GetIceProperty()->
  * SetNumberOfCracks(4); SetIceProperty shares one between mappers. How the ice is drawn
- * (two-sided refraction, the interior method, crack clipping, debug views) is set on the mapper.
+ * (two-sided refraction, the interior method, debug views) is set on the mapper.
  *
  * Any polydata with polygons works: point normals are computed when the input has none. Inputs
  * without polygons or with non-finite points are reported with an error and not drawn. Flat
  * input (all points in one plane: no volume, no inside) is drawn as a surface without cracks,
  * with one warning. Open surfaces are drawn as they are; Geometry crack clipping needs a closed
  * one and falls back to the depth interval, with one warning.
+ *
+ * @sa vtkIceProperty vtkIcePass vtkIcePaperInterior
  */
 #ifndef vtkIceMapper_h
 #define vtkIceMapper_h
 
-#include "RenderingIceModule.h" // for export macro
-#include "vtkIceProperty.h"     // for GetIceProperty
+#include "RenderingIceModule.h"  // for export macro
+#include "vtkIcePaperInterior.h" // for GetPaperInterior
+#include "vtkIceProperty.h"      // for GetIceProperty
 #include "vtkIceWorldSpaceMapper.h"
 
 #include <map>    // for members
 #include <memory> // for members
 
 class vtkActor;
-class vtkIceInterior;
+class vtkIceInteriorSources;
 class vtkIceInteriorTable;
 class vtkIcePrefilteredEnvironment;
 class vtkIceStaticEnvironment;
@@ -161,33 +164,6 @@ public:
   double* GetBounds() override;
   void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
 
-  enum CrackClippingModes
-  {
-    DepthInterval = 0, // per fragment, against the ice's [front, back] depth (the paper)
-    Geometry = 1       // once on the CPU against the ice surface: exact for concave ice
-  };
-
-  ///@{
-  /**
-   * How cracks are kept inside the ice. Default DepthInterval. Geometry needs a closed surface:
-   * for an open one (a warning says so) the cracks are clipped to the depth interval.
-   */
-  vtkSetClampMacro(CrackClipping, int, DepthInterval, Geometry);
-  vtkGetMacro(CrackClipping, int);
-  void SetCrackClippingToDepthInterval() { this->SetCrackClipping(DepthInterval); }
-  void SetCrackClippingToGeometry() { this->SetCrackClipping(Geometry); }
-  ///@}
-
-  ///@{
-  /**
-   * Let the cracks' normals perturb the refraction (the paper's experiment): cracks are drawn
-   * into the back-face normal texture too. Default off.
-   */
-  vtkSetMacro(CracksPerturbRefraction, bool);
-  vtkGetMacro(CracksPerturbRefraction, bool);
-  vtkBooleanMacro(CracksPerturbRefraction, bool);
-  ///@}
-
   enum InteriorMethods
   {
     InteriorPaperPasses = 0, // the paper: a depth-interval pass, crack and air draws per ice
@@ -205,13 +181,25 @@ public:
    * ice's depth interval is rendered, then the air planes (blended, back to front) and the crack
    * sheets (their highlights added) are drawn over it; no crack sheets' mirror and no milky core.
    * Documentation/performance.md compares the two. DebugCracksUnclipped always uses the paper's
-   * passes. (Before VTK Ice 2026-12-04 a third value, 1, drew the interior in the ice's own
-   * fragment shader; it is now the screen-space step's value, which draws the same look.)
+   * passes. The paper's passes are drawn by VTKIce::RenderingIcePaper (see vtkIcePaperInterior).
+   * (Before VTK Ice 2026-12-04 a third value, 1, drew the interior in the ice's own fragment
+   * shader; it is now the screen-space step's value, which draws the same look.)
    */
   vtkSetClampMacro(InteriorMethod, int, InteriorPaperPasses, InteriorScreenSpace);
   vtkGetMacro(InteriorMethod, int);
   void SetInteriorMethodToPaperPasses() { this->SetInteriorMethod(InteriorPaperPasses); }
   void SetInteriorMethodToScreenSpace() { this->SetInteriorMethod(InteriorScreenSpace); }
+  ///@}
+
+  ///@{
+  /**
+   * The paper's passes of this mapper, with the settings only they use (CrackClipping,
+   * CracksPerturbRefraction). The mapper makes one with vtkIcePaperInterior::New() on first use
+   * (the OpenGL implementation where VTKIce::RenderingIcePaper is loaded); mappers may share one.
+   * Setting nullptr gives the mapper a new one with the defaults.
+   */
+  vtkIcePaperInterior* GetPaperInterior();
+  void SetPaperInterior(vtkIcePaperInterior* interior);
   ///@}
 
   enum DebugViews
@@ -235,7 +223,8 @@ public:
   /**
    * The crack surfaces in the input's coordinates: NumberOfCracks instances of three generic
    * crack models, randomly rotated, near the centre, scaled to the input's bounds; clipped to the
-   * ice surface in Geometry mode. Rebuilt only when the input or a crack parameter changes.
+   * ice surface with the paper interior's Geometry crack clipping. Rebuilt only when the input or
+   * a crack parameter changes.
    */
   vtkPolyData* GetCrackGeometry();
 
@@ -328,8 +317,6 @@ protected:
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
   int InteriorMethod = InteriorScreenSpace;
-  int CrackClipping = DepthInterval;
-  bool CracksPerturbRefraction = false;
   int DebugView = DebugOff;
   bool WarnWithoutEnvironment = true;
   vtkIdType NumberOfCrackDraws = 0;
@@ -353,7 +340,10 @@ protected:
   bool EmptyInputIsPiece() override;
   double PlacementBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
 
-  std::unique_ptr<vtkIceInterior> Interior; // cracks and air
+  std::unique_ptr<vtkIceInteriorSources> Interior;    // cracks and air images
+  vtkSmartPointer<vtkIcePaperInterior> PaperInterior; // made on first use
+  // The paper's CracksPerturbRefraction, without making the paper interior.
+  bool CracksPerturbRefraction() const;
 
   // What InputPrepared and UsableCrackClipping found about the current input.
   bool InputFlat = false;

@@ -4,8 +4,8 @@
 // draws, and the screen-space interior's records and uniforms.
 #include "vtkIceMapper.h"
 
-#include "vtkIceInterior.h"
 #include "vtkIceInteriorLook.h"
+#include "vtkIceInteriorSources.h"
 #include "vtkIceInteriorTable.h"
 #include "vtkIcePropertyUniforms.h"
 
@@ -21,7 +21,7 @@ void vtkIceMapper::DrawPaperCracks(vtkRenderer* ren, vtkActor* actor, bool overl
     view == vtkIceMapper::DebugCracksUnclipped || view == vtkIceMapper::DebugCracksClipped;
   const bool otherDebug = view == vtkIceMapper::DebugFrontDepth ||
     view == vtkIceMapper::DebugBackDepth || view == vtkIceMapper::DebugAir;
-  if (otherDebug || (!overlay && (!this->CracksPerturbRefraction || debugCracks)) ||
+  if (otherDebug || (!overlay && (!this->CracksPerturbRefraction() || debugCracks)) ||
     (overlay && this->UsesScreenInterior()))
   {
     return;
@@ -32,14 +32,15 @@ void vtkIceMapper::DrawPaperCracks(vtkRenderer* ren, vtkActor* actor, bool overl
     return;
   }
   const bool unclipped = view == vtkIceMapper::DebugCracksUnclipped;
-  vtkIceInterior::CrackLook look;
-  look.ClipToInterval = this->UsableCrackClipping() == vtkIceMapper::DepthInterval && !unclipped;
+  vtkIcePaperInterior::CrackLook look;
+  look.ClipToInterval =
+    this->UsableCrackClipping() == vtkIcePaperInterior::DepthInterval && !unclipped;
   look.Debug = debugCracks;
   look.Unclipped = unclipped;
   look.Intensity = this->GetIceProperty()->GetCrackIntensity();
   look.BumpFrequency = vtkIceInteriorLook::CrackBumpFrequency(this->InputExtent());
   this->HelpersSawPass = true;
-  this->Interior->DrawCracks(ren, actor, look, overlay);
+  this->GetPaperInterior()->DrawCracks(ren, actor, geometry, look, overlay);
   ++this->NumberOfCrackDraws;
 }
 
@@ -62,8 +63,8 @@ void vtkIceMapper::DrawPaperAir(vtkRenderer* ren, vtkActor* actor)
   this->HelpersSawPass = true;
   double bounds[6];
   this->GetLookBounds(bounds);
-  this->Interior->DrawAir(ren, actor, this->PreparedInput, bounds, look->GetNumberOfAirPlanes(),
-    look->GetAirSeed(), look->GetMilkiness(), debugAir);
+  this->GetPaperInterior()->DrawAir(ren, actor, this->PreparedInput, bounds,
+    look->GetNumberOfAirPlanes(), look->GetAirSeed(), look->GetMilkiness(), debugAir);
 }
 
 //------------------------------------------------------------------------------

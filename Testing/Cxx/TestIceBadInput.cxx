@@ -17,6 +17,7 @@
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceEnvironmentReader.h"
 #include "vtkIceMapper.h"
+#include "vtkIcePaperInterior.h"
 #include "vtkIcePass.h"
 
 #include "vtkActor.h"
@@ -24,6 +25,7 @@
 #include "vtkCellArray.h"
 #include "vtkConeSource.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPlaneSource.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -308,7 +310,7 @@ bool CheckOpen()
   // Crack clipping belongs to the paper's passes.
   const DrawnResult geometry = RenderDrawn(bowl, [](vtkIceMapper* m) {
     m->SetInteriorMethodToPaperPasses();
-    m->SetCrackClippingToGeometry();
+    m->GetPaperInterior()->SetCrackClippingToGeometry();
   });
   ok = Expect(geometry.Errors == 0 && geometry.Warnings == 1 &&
            geometry.Last.find("not a closed surface") != std::string::npos && geometry.ConeDrawn &&
@@ -316,6 +318,24 @@ bool CheckOpen()
          "open surface (a bowl), paper passes, geometry crack clipping: " + geometry.Describe()) &&
     ok;
   return ok;
+}
+
+// A program that did not load VTKIce::RenderingIcePaper (its factory override disabled here):
+// the paper's passes say once what to link, and the rest of the ice and the scene are drawn.
+bool CheckPaperWithoutModule()
+{
+  vtkObjectFactory::SetAllEnableFlags(0, "vtkIcePaperInterior");
+  vtkSmartPointer<vtkIcePaperInterior> bare = vtkSmartPointer<vtkIcePaperInterior>::New();
+  vtkObjectFactory::SetAllEnableFlags(1, "vtkIcePaperInterior");
+  vtkNew<vtkSphereSource> sphere;
+  const DrawnResult r = RenderDrawn(sphere, [bare](vtkIceMapper* m) {
+    m->SetInteriorMethodToPaperPasses();
+    m->SetPaperInterior(bare);
+  });
+  return Expect(!bare->CanDraw() && r.Errors == 1 && r.Warnings == 0 &&
+      r.Last.find("VTKIce::RenderingIcePaper") != std::string::npos && r.ConeDrawn &&
+      r.IcePixels > 1000 && r.GLErrors.empty(),
+    "paper passes without their module: " + r.Describe());
 }
 
 bool CheckHuge()
@@ -448,6 +468,7 @@ int TestIceBadInput(int argc, char* argv[])
   ok = CheckCase("infinite point", InfiniteSphere(), "NaN or infinite") && ok;
   ok = CheckFlat() && ok;
   ok = CheckOpen() && ok;
+  ok = CheckPaperWithoutModule() && ok;
   ok = CheckHuge() && ok;
   ok = CheckParameters() && ok;
   std::string temporary = ".";

@@ -230,7 +230,7 @@ bool PerturbRefraction()
   scene.Mapper->GetIceProperty()->SetNumberOfCracks(2);
   scene.Mapper->GetIceProperty()->SetCrackIntensity(0.0); // look at the refraction alone
   const IceTest::Image plain = scene.Render();
-  scene.Mapper->CracksPerturbRefractionOn();
+  scene.Mapper->GetPaperInterior()->CracksPerturbRefractionOn();
   const IceTest::Image perturbed = scene.Render();
   size_t different = 0;
   for (size_t p = 0; p < plain.RGB.size() / 3; ++p)

@@ -79,7 +79,8 @@ int TestIceCracksConcave(int argc, char* argv[])
     mappers[i]->GetIceProperty()->SetCrackSeed(2);
     mappers[i]->SetInteriorMethod(
       i < 2 ? vtkIceMapper::InteriorPaperPasses : vtkIceMapper::InteriorScreenSpace);
-    mappers[i]->SetCrackClipping(i == 1 ? vtkIceMapper::Geometry : vtkIceMapper::DepthInterval);
+    mappers[i]->GetPaperInterior()->SetCrackClipping(
+      i == 1 ? vtkIcePaperInterior::Geometry : vtkIcePaperInterior::DepthInterval);
     mappers[i]->SetDebugView(vtkIceMapper::DebugCracksClipped);
     actors[i]->SetMapper(mappers[i]);
     renderers[i]->AddActor(actors[i]);

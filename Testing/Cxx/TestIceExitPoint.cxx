@@ -321,7 +321,7 @@ bool WithEverything()
 {
   IceTest::BlockScene scene;
   scene.Mapper->GetIceProperty()->SetNumberOfCracks(3);
-  scene.Mapper->CracksPerturbRefractionOn();
+  scene.Mapper->GetPaperInterior()->CracksPerturbRefractionOn();
   scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(19);
   scene.Mapper->GetIceProperty()->SetBumpStrength(0.08);
   scene.Mapper->GetIceProperty()->GlisteningOn();

@@ -52,7 +52,7 @@ struct Scene
   {
     this->Mapper->SetInputConnection(this->Block->GetOutputPort());
     this->Mapper->GetIceProperty()->SetNumberOfCracks(4);
-    this->Mapper->CracksPerturbRefractionOn();
+    this->Mapper->GetPaperInterior()->CracksPerturbRefractionOn();
     this->Ice->SetMapper(this->Mapper);
     this->Renderer->AddActor(this->Ice);
     this->Renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 128));
@@ -121,7 +121,7 @@ bool DepthIntervalOnlyWhenRead()
     std::cout << "depth-interval geometry passes per frame: " << passes << "\n";
     return passes;
   };
-  scene.Mapper->CracksPerturbRefractionOff();
+  scene.Mapper->GetPaperInterior()->CracksPerturbRefractionOff();
   scene.Mapper->GetIceProperty()->SetNumberOfCracks(0);
   scene.Mapper->GetIceProperty()->SetNumberOfAirPlanes(0);
   ok =

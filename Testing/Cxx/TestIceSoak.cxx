@@ -310,10 +310,10 @@ void Soak::Event(int frame)
       }
       if (!closed.empty())
       {
-        vtkIceMapper* mapper = closed[any(closed.size())];
-        mapper->SetCrackClipping(mapper->GetCrackClipping() == vtkIceMapper::Geometry
-            ? vtkIceMapper::DepthInterval
-            : vtkIceMapper::Geometry);
+        vtkIcePaperInterior* paper = closed[any(closed.size())]->GetPaperInterior();
+        paper->SetCrackClipping(paper->GetCrackClipping() == vtkIcePaperInterior::Geometry
+            ? vtkIcePaperInterior::DepthInterval
+            : vtkIcePaperInterior::Geometry);
       }
       break;
     }

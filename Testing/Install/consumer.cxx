@@ -20,6 +20,9 @@ int main()
             << ", teapot " << teapot->GetOutput()->GetNumberOfPolys() << " triangles, "
             << reader->GetClassName() << " layout " << reader->GetLayoutAsString()
             << ", the look's setting eta " << (vtkIceLookTable::Find("eta") ? "found" : "missing")
-            << "\n";
-  return teapot->GetOutput()->GetNumberOfPolys() > 0 && vtkIceLookTable::Find("eta") ? 0 : 1;
+            << ", paper passes " << mapper->GetPaperInterior()->GetClassName() << "\n";
+  return teapot->GetOutput()->GetNumberOfPolys() > 0 && vtkIceLookTable::Find("eta") &&
+      mapper->GetPaperInterior()->CanDraw()
+    ? 0
+    : 1;
 }

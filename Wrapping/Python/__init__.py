@@ -23,6 +23,8 @@ from .FiltersIce import *  # noqa: F401,F403,E402
 from .RenderingIce import *  # noqa: F401,F403,E402
 from .IOIce import *  # noqa: F401,F403,E402
 from .LookIce import *  # noqa: F401,F403,E402
+# The paper's passes (InteriorPaperPasses): importing them registers their object factory.
+from .RenderingIcePaper import *  # noqa: F401,F403,E402
 
 
 def use_backend(name="auto"):

@@ -22,16 +22,17 @@ import pyvista as _pv
 from vtkmodules.vtkCommonCore import vtkObject as _vtkObject
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper as _vtkOpenGLPolyDataMapper
 
-from . import vtkIceCubeMapPass, vtkIceMapper, vtkIcePass, vtkIceProperty
+from . import vtkIceCubeMapPass, vtkIceMapper, vtkIcePaperInterior, vtkIcePass, vtkIceProperty
 
 __all__ = ["add_ice", "ice_pass"]
 
 
 def _setter(mapper, name):
     """The Set method for a parameter given as 'NumberOfCracks' or 'number_of_cracks': the
-    look's are the mapper's vtkIceProperty's, how the ice is drawn the mapper's own."""
+    look's are the mapper's vtkIceProperty's, how the ice is drawn the mapper's own, and the
+    paper's passes' own (crack_clipping) its vtkIcePaperInterior's."""
     camel = name if name[:1].isupper() else "".join(part.title() for part in name.split("_"))
-    for target in (mapper.GetIceProperty(), mapper):
+    for target in (mapper.GetIceProperty(), mapper, mapper.GetPaperInterior()):
         method = getattr(target, "Set" + camel, None)
         if method is not None:
             return method
@@ -46,10 +47,11 @@ def _settable(cls, base):
 
 
 def _look_parameters():
-    """The parameters of the ice's look (vtkIceProperty) and those vtkIceMapper adds to VTK's
-    mapper (those of vtkOpenGLPolyDataMapper work too)."""
+    """The parameters of the ice's look (vtkIceProperty), those vtkIceMapper adds to VTK's
+    mapper (those of vtkOpenGLPolyDataMapper work too) and the paper passes' own."""
     return sorted(_settable(vtkIceProperty, _vtkObject) |
-                  _settable(vtkIceMapper, _vtkOpenGLPolyDataMapper))
+                  _settable(vtkIceMapper, _vtkOpenGLPolyDataMapper) |
+                  _settable(vtkIcePaperInterior, _vtkObject))
 
 
 def ice_pass(plotter):

@@ -183,7 +183,10 @@ vtkIceDrawingMacro(TwoSidedRefraction, int, v != 0);
 vtkIceLookMacro(NumberOfCracks, int, v);
 vtkIceLookMacro(CrackSeed, int, v);
 vtkIceLookMacro(CrackIntensity, double, v);
-vtkIceDrawingMacro(CrackClipping, int, v);
+void vtkIceRepresentation::SetCrackClipping(int v)
+{
+  this->ForEachIceMapper([v](vtkIceMapper* m) { m->GetPaperInterior()->SetCrackClipping(v); });
+}
 vtkIceLookMacro(NumberOfAirPlanes, int, v);
 vtkIceLookMacro(AirSeed, int, v);
 vtkIceLookMacro(Milkiness, double, v);

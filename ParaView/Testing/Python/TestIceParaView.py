@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 """The Ice representation and the Ice View in pvpython: pixels against Surface, multiblock input,
-colour by array, parallel projection, the skybox line-up, reviewed baselines."""
+colour by array, parallel projection, the skybox line-up, reviewed baselines, the paper passes'
+cracks."""
 import os
 import sys
 
@@ -227,6 +228,22 @@ h.check(redness(dynamic) > redness(static) + 20,
         (redness(dynamic), redness(static)))
 h.check(abs(redness(alone) - redness(static)) < 20 and redness(alone) < redness(dynamic) - 20,
         "dynamic environment: and not once the ball is hidden (%.1f)" % redness(alone))
+Delete(view)
+
+# 7. The paper's passes draw their cracks: the plugin loads their module (VTKIce::RenderingIcePaper),
+# without which the ice has no paper cracks and one error says so.
+view = h.make_view()
+display = Show(sphere, view)
+display.Representation = "Ice"
+h.clean_ice(display)
+display.InteriorMethod = 0
+h.look_at(view)
+plain = h.capture(view, os.path.join(out, "paper-passes-no-cracks.png"))
+display.NumberOfCracks = 6
+display.CrackIntensity = 20
+cracked = h.capture(view, os.path.join(out, "paper-passes-cracks.png"))
+changed = (h.difference(cracked, plain) > 8).sum()
+h.check(changed > 200, "paper passes: the cracks change %d pixels of the sphere" % changed)
 Delete(view)
 
 h.finish()

@@ -1,18 +1,18 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkIceInterior.h"
+#include "vtkIceOpenGLPaperInterior.h"
 
 #include "vtkIceAirGeometry.h"
 #include "vtkIceAirMapper.h"
 #include "vtkIceAirTextureSource.h"
 #include "vtkIceBackToFront.h"
-#include "vtkIceCrackGeometry.h"
 #include "vtkIceCrackMapper.h"
 #include "vtkIceInteriorLook.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPolyData.h"
@@ -20,6 +20,8 @@
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
 #include "vtkIceVTKCompat.h"
+
+vtkStandardNewMacro(vtkIceOpenGLPaperInterior);
 
 namespace
 {
@@ -78,7 +80,7 @@ void DrawOverScene(
 }
 
 //------------------------------------------------------------------------------
-vtkIceInterior::vtkIceInterior()
+vtkIceOpenGLPaperInterior::vtkIceOpenGLPaperInterior()
 {
   vtkProperty* property = this->CrackActor->GetProperty();
   property->SetAmbient(0.0);
@@ -88,7 +90,6 @@ vtkIceInterior::vtkIceInterior()
   property->SetSpecularColor(1.0, 1.0, 1.0);
   this->CrackActor->SetMapper(this->CrackMapper);
   this->CrackMapper->ScalarVisibilityOff();
-  this->CrackMapper->SetInputConnection(this->Cracks->GetOutputPort());
 
   this->AirActor->GetProperty()->LightingOff();
   this->AirActor->SetMapper(this->AirMapper);
@@ -102,38 +103,16 @@ vtkIceInterior::vtkIceInterior()
   this->AirTexture->EdgeClampOn();
   this->AirTexture->SetColorModeToDirectScalars();
   this->AirMapper->SetAirTexture(this->AirTexture);
-  // The screen-space interior samples the same images in a loop: without anisotropic filtering,
-  // which makes llvmpipe a hundred times slower there (15 s a frame for 19 planes).
-  this->AirAtlas->SetInputConnection(this->AirImages->GetOutputPort());
-  this->AirAtlas->InterpolateOn();
-  this->AirAtlas->MipmapOn();
-  this->AirAtlas->SetMaximumAnisotropicFiltering(1.0);
-  this->AirAtlas->RepeatOff();
-  this->AirAtlas->EdgeClampOn();
-  this->AirAtlas->SetColorModeToDirectScalars();
 }
 
 //------------------------------------------------------------------------------
-vtkIceInterior::~vtkIceInterior() = default;
+vtkIceOpenGLPaperInterior::~vtkIceOpenGLPaperInterior() = default;
 
 //------------------------------------------------------------------------------
-vtkPolyData* vtkIceInterior::UpdateCracks(
-  vtkPolyData* ice, const double bounds[6], int number, int seed, bool clipToSurface)
+void vtkIceOpenGLPaperInterior::DrawCracks(
+  vtkRenderer* renderer, vtkActor* ice, vtkPolyData* cracks, const CrackLook& look, bool overlay)
 {
-  this->Cracks->SetInputData(ice);
-  this->Cracks->SetPlacementBounds(
-    bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5]);
-  this->Cracks->SetNumberOfCracks(number);
-  this->Cracks->SetSeed(seed);
-  this->Cracks->SetClipToSurface(clipToSurface);
-  this->Cracks->Update();
-  return this->Cracks->GetOutput();
-}
-
-//------------------------------------------------------------------------------
-void vtkIceInterior::DrawCracks(
-  vtkRenderer* renderer, vtkActor* ice, const CrackLook& look, bool overlay)
-{
+  this->CrackMapper->SetInputData(cracks);
   this->CrackMapper->SetClipToInterval(look.ClipToInterval);
   this->CrackMapper->SetDebugColor(look.Debug);
   this->CrackMapper->SetIntensity(look.Intensity);
@@ -155,7 +134,7 @@ void vtkIceInterior::DrawCracks(
 }
 
 //------------------------------------------------------------------------------
-void vtkIceInterior::DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* iceInput,
+void vtkIceOpenGLPaperInterior::DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* iceInput,
   const double bounds[6], int number, int seed, double milkiness, bool debug)
 {
   // Back to front for this camera: the eye in the ice's model coordinates.
@@ -176,23 +155,16 @@ void vtkIceInterior::DrawAir(vtkRenderer* renderer, vtkActor* ice, vtkPolyData* 
 }
 
 //------------------------------------------------------------------------------
-vtkTexture* vtkIceInterior::GetAirAtlas(int seed)
-{
-  this->AirImages->SetSeed(seed);
-  return this->AirAtlas;
-}
-
-//------------------------------------------------------------------------------
-void vtkIceInterior::ForgetRenderPasses()
+void vtkIceOpenGLPaperInterior::ForgetRenderPasses()
 {
   this->CrackMapper->ForgetRenderPasses();
   this->AirMapper->ForgetRenderPasses();
 }
 
 //------------------------------------------------------------------------------
-void vtkIceInterior::ReleaseGraphicsResources(vtkWindow* window)
+void vtkIceOpenGLPaperInterior::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->CrackMapper->ReleaseGraphicsResources(window);
   this->AirMapper->ReleaseGraphicsResources(window);
-  this->AirAtlas->ReleaseGraphicsResources(window);
+  this->AirTexture->ReleaseGraphicsResources(window);
 }

@@ -5,13 +5,13 @@
  * @brief   Draws the air-bubble planes inside ice, clipped to its depth interval (private to
  *          the module).
  *
- * Used by vtkIceMapper for its air (the milky look of ice). The input is a set of planes with
- * texture coordinates in the point array "vtkIceAirUV"; the fragment shader samples the bubble
- * atlas (AirTexture, e.g. from vtkIceAirTextureSource), whitens and thickens it by Milkiness,
- * discards fragments outside the ice's [front, back] depth interval (iceDepthInterval, handed
- * over by vtkIcePass) and is tested against the
- * scene at the ice's front depth. Drawn with alpha blending, planes sorted back to front.
- * DebugColor draws solid green where a bubble covers.
+ * Used by vtkIceOpenGLPaperInterior for the air of an ice mapper (the milky look of ice). The input
+ * is a set of planes with texture coordinates in the point array "vtkIceAirUV"; the fragment shader
+ * samples the bubble atlas (AirTexture, e.g. from vtkIceAirTextureSource), whitens and thickens it
+ * by Milkiness, discards fragments outside the ice's [front, back] depth interval
+ * (iceDepthInterval, handed over by vtkIcePass) and is tested against the scene at the ice's front
+ * depth. Drawn with alpha blending, planes sorted back to front. DebugColor draws solid green where
+ * a bubble covers.
  */
 #ifndef vtkIceAirMapper_h
 #define vtkIceAirMapper_h

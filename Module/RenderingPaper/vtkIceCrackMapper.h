@@ -5,13 +5,13 @@
  * @brief   Draws crack surfaces inside ice (private to the module): a bump-mapped specular
  *          highlight, nothing else.
  *
- * Used by vtkIceMapper for its cracks (paper section 3.3). The fragment shader tilts the normal by
- * a noise field fixed to the crack (bump mapping), keeps only the specular term of VTK's lighting,
- * and, with ClipToInterval on, discards fragments whose view depth is outside the ice's
- * [front, back] depth interval, the sampler iceDepthInterval that vtkIcePass hands to the
- * shaders of the ice and its cracks. Fragments are tested against
- * the scene at the ice's front depth, so what hides the ice hides its cracks. DebugColor draws
- * solid red instead of the highlight.
+ * Used by vtkIceOpenGLPaperInterior for the cracks of an ice mapper (paper section 3.3). The
+ * fragment shader tilts the normal by a noise field fixed to the crack (bump mapping), keeps only
+ * the specular term of VTK's lighting, and, with ClipToInterval on, discards fragments whose view
+ * depth is outside the ice's [front, back] depth interval, the sampler iceDepthInterval that
+ * vtkIcePass hands to the shaders of the ice and its cracks. Fragments are tested against the scene
+ * at the ice's front depth, so what hides the ice hides its cracks. DebugColor draws solid red
+ * instead of the highlight.
  */
 #ifndef vtkIceCrackMapper_h
 #define vtkIceCrackMapper_h

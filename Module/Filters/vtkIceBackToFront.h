@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIceBackToFront
- * @brief   Orders the polygons of its input back to front for an eye point (private to the
- *          module).
+ * @brief   Orders the polygons of its input back to front for an eye point (for the
+ *          renderer; not installed).
  *
  * For alpha blending without depth writes (the ice's air planes): the polygons come out
  * farthest first, by the distance of their centroid from Eye (in the input's coordinates); ties
@@ -13,11 +13,12 @@
 #ifndef vtkIceBackToFront_h
 #define vtkIceBackToFront_h
 
+#include "FiltersIceModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <vector> // for Order
 
-class vtkIceBackToFront : public vtkPolyDataAlgorithm
+class FILTERSICE_EXPORT vtkIceBackToFront : public vtkPolyDataAlgorithm
 {
 public:
   static vtkIceBackToFront* New();
