@@ -28,6 +28,8 @@ else
     libglm-dev libopenimageio-dev
     xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
     dpkg-dev lintian ffmpeg
+    # The photographed HDR panoramas ice-render --env finds by name (CC0, blender's data).
+    blender-data
   )
   if [ "${1:-}" = fuzz ]; then
     packages+=(clang-14 libclang-rt-14-dev)

@@ -22,6 +22,7 @@
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
+#include "vtkToneMappingPass.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <iostream>
@@ -46,11 +47,13 @@ int main(int argc, char* argv[])
     vtkNew<vtkIcePass> pass;
     vtkNew<vtkIceCubeMapPass> cubeMaps;
     vtkNew<vtkCamera> camera;
+    vtkNew<vtkToneMappingPass> toneMapping;
+    vtkIceLookTable::ResetToneMapping(toneMapping);
     if (!options.Static)
     {
       pass->SetCubeMapPass(cubeMaps);
     }
-    const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
+    const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera, toneMapping };
     vtkIceLookTable::ApplyAll(target, options.Look);
     std::cout << vtkIceLookTable::WritePreset(target, options.CameraGiven);
     return std::cout.flush() ? 0 : Fail("cannot write to standard output", 1);
@@ -104,13 +107,28 @@ int main(int argc, char* argv[])
   vtkIcePass* pass = vtkIcePass::SafeDownCast(renderer->GetPass());
   vtkNew<vtkIceCubeMapPass> spareCubeMaps; // for a static scene that asks for the cube map
   vtkIceCubeMapPass* cubeMaps = pass->GetCubeMapPass() ? pass->GetCubeMapPass() : spareCubeMaps;
+  vtkNew<vtkToneMappingPass> toneMapping;
+  vtkIceLookTable::ResetToneMapping(toneMapping);
   const vtkIceLookTable::Target target{ vtkIceMapper::SafeDownCast(ice->GetMapper()), pass,
-    cubeMaps, renderer->GetActiveCamera() };
+    cubeMaps, renderer->GetActiveCamera(), toneMapping };
   if (options.Fit)
   {
     renderer->ResetCamera(ice->GetBounds());
   }
   vtkIceLookTable::ApplyAll(target, options.Look);
+  // The HDR scene (a photographed environment is brighter than white) tone mapped: VTK's pass
+  // around the ice pass, only where the look asks for a curve.
+  if (vtkIceLookTable::AsksForToneMapping(toneMapping))
+  {
+    toneMapping->SetDelegatePass(pass);
+    renderer->SetPass(toneMapping);
+  }
+  const std::string curve = vtkIceLookTable::Value(target, "tone-mapping");
+  if (vtkIceLookTable::Value(target, "exposure") != "0" && (curve == "none" || curve == "reinhard"))
+  {
+    std::cerr << "ice-render: exposure has no effect with tone-mapping " << curve
+              << " (VTK applies it in the exponential, filmic and aces curves)\n";
+  }
   renderer->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;

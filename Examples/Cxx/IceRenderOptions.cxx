@@ -26,7 +26,7 @@ namespace IceRenderOptions
 namespace
 {
 const char* const Usage =
-  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|PATH] [--size WxH]\n"
+  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|NAME|PATH] [--size WxH]\n"
   "                  [--out FILE] [--static] [--interactive] [--turntable N [--rate FPS]]\n"
   "                  [--preset NAME|FILE] [--print-preset] [look and camera options]\n"
   "                  [--backend auto|x|egl|osmesa]\n"
@@ -34,7 +34,9 @@ const char* const Usage =
   " look)\nto ice.png.\n"
   "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file; default teapot\n"
   "  --env    sky (default), test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
-  "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too)\n"
+  "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too); or\n"
+  "           a photographed HDR panorama of Debian's blender-data by name: city, courtyard,\n"
+  "           forest, interior, night, studio, sunrise, sunset (with --tone-mapping filmic)\n"
   "  --size   image size WxH, each in [16, 8192], default 1024x768\n"
   "  --out    output image, .png or .jpg (default ice.png); replaced only once the new image\n"
   "           is complete: a failed or interrupted run leaves the old file as it was\n"

@@ -41,6 +41,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
 
 namespace IceScene
 {
@@ -299,8 +300,35 @@ vtkSmartPointer<vtkPolyData> LoadModel(
   return normalized;
 }
 
+const std::vector<std::string>& Panoramas()
+{
+  static const std::vector<std::string> names = { "city", "courtyard", "forest", "interior",
+    "night", "studio", "sunrise", "sunset" };
+  return names;
+}
+
+std::string PanoramaFolder()
+{
+  return "/usr/share/blender/datafiles/studiolights/world";
+}
+
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error)
 {
+  const std::vector<std::string>& panoramas = Panoramas();
+  if (std::find(panoramas.begin(), panoramas.end(), environment) != panoramas.end())
+  {
+    // A name, not a path: ./courtyard names a file of that name.
+    const std::string path = PanoramaFolder() + "/" + environment + ".exr";
+    if (!std::ifstream(path).good())
+    {
+      error = "cannot load environment '" + environment + "': the panorama " + environment +
+        " comes with Debian's blender-data package, which is not installed (" + path +
+        " is missing): apt-get install blender-data, or give a path";
+      return nullptr;
+    }
+    return LoadEnvironment(path, error);
+  }
+
   auto texture = vtkSmartPointer<vtkTexture>::New();
   if (environment == "sky" || environment == "test")
   {

@@ -8,6 +8,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkActor;
 class vtkPolyData;
@@ -25,8 +26,14 @@ vtkSmartPointer<vtkPolyData> LoadModel(
 // "sky" (procedural landscape), "test" (smooth direction pattern), or a path for
 // vtkIceEnvironmentReader: a folder holding six face images px, nx, py, ny, pz, nz (any image
 // extension; all square, all the same size), a horizontal (4:3) or vertical (3:4) cross image, or
-// an equirectangular (2:1) panorama, 8-bit or HDR. Returns nullptr and sets `error` on failure.
+// an equirectangular (2:1) panorama, 8-bit or HDR; or the name of one of Debian's blender-data
+// panoramas (Panoramas()). Returns nullptr and sets `error` on failure.
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error);
+
+// The photographed HDR panoramas (CC0, 1024 x 512 EXR) that Debian's blender-data package puts in
+// PanoramaFolder(): city, courtyard, forest, interior, night, studio, sunrise, sunset.
+const std::vector<std::string>& Panoramas();
+std::string PanoramaFolder();
 
 // Adds the landscape of the default scene: a checkered ground at `groundHeight`, five rocks and
 // six pine trees within 8 units of the origin, the sky's sun and a soft headlight.

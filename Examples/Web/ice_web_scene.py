@@ -23,7 +23,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, 
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (the remote view's trackball)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkRenderingOpenGL2 import vtkToneMappingPass
 
 import vtkice
 
@@ -131,6 +131,10 @@ class IceScene:
         self.cube_maps = vtkice.vtkIceCubeMapPass()
         self.pass_.SetCubeMapPass(self.cube_maps)  # the dynamic cube map, on as in ice-render
         self.renderer.SetPass(self.pass_)
+        # Around the ice pass where the look asks for a tone curve (tone-mapping, exposure).
+        self.tone_mapping = vtkToneMappingPass()
+        Look.ResetToneMapping(self.tone_mapping)
+        self.tone_mapping.SetDelegatePass(self.pass_)
         self._add_sky()
         self._add_landscape()
         self.mapper = vtkice.vtkIceMapper()
@@ -215,20 +219,29 @@ class IceScene:
 
     def apply(self, name, value):
         """Sets a look setting; returns "" or why the value is refused."""
-        return Look.Apply(self.mapper, self.pass_, self.cube_maps,
-                          self.renderer.GetActiveCamera(), name, str(value))
+        problem = Look.Apply(self.mapper, self.pass_, self.cube_maps,
+                             self.renderer.GetActiveCamera(), self.tone_mapping, name, str(value))
+        self._place_tone_mapping()
+        return problem
+
+    def _place_tone_mapping(self):
+        wanted = self.tone_mapping if Look.AsksForToneMapping(self.tone_mapping) else self.pass_
+        if self.renderer.GetPass() is not wanted:
+            self.renderer.SetPass(wanted)
 
     def value(self, name):
         return Look.GetValue(self.mapper, self.pass_, self.cube_maps,
-                             self.renderer.GetActiveCamera(), name)
+                             self.renderer.GetActiveCamera(), self.tone_mapping, name)
 
     def apply_preset(self, name):
         """The look back to the defaults, then the preset (its camera settings move the view)."""
         for setting in look_settings():
             self.apply(setting["name"], setting["default"])
-        return Look.ApplyPreset(self.mapper, self.pass_, self.cube_maps,
-                                self.renderer.GetActiveCamera(),
-                                os.path.join(PRESETS, name + ".ice"))
+        problem = Look.ApplyPreset(self.mapper, self.pass_, self.cube_maps,
+                                   self.renderer.GetActiveCamera(), self.tone_mapping,
+                                   os.path.join(PRESETS, name + ".ice"))
+        self._place_tone_mapping()
+        return problem
 
     def screenshot_png(self):
         """The current picture as PNG bytes."""

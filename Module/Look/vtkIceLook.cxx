@@ -147,7 +147,14 @@ std::string vtkIceLook::GetDefault(int i)
 std::string vtkIceLook::Apply(vtkIceMapper* mapper, vtkIcePass* pass, vtkIceCubeMapPass* cubeMaps,
   vtkCamera* camera, const char* name, const char* value)
 {
-  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
+  return vtkIceLook::Apply(mapper, pass, cubeMaps, camera, nullptr, name, value);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceLook::Apply(vtkIceMapper* mapper, vtkIcePass* pass, vtkIceCubeMapPass* cubeMaps,
+  vtkCamera* camera, vtkToneMappingPass* toneMapping, const char* name, const char* value)
+{
+  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera, toneMapping };
   if (!Complete(target))
   {
     return NoScene;
@@ -159,7 +166,14 @@ std::string vtkIceLook::Apply(vtkIceMapper* mapper, vtkIcePass* pass, vtkIceCube
 std::string vtkIceLook::GetValue(vtkIceMapper* mapper, vtkIcePass* pass,
   vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, const char* name)
 {
-  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
+  return vtkIceLook::GetValue(mapper, pass, cubeMaps, camera, nullptr, name);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceLook::GetValue(vtkIceMapper* mapper, vtkIcePass* pass,
+  vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, vtkToneMappingPass* toneMapping, const char* name)
+{
+  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera, toneMapping };
   return Complete(target) && name ? vtkIceLookTable::Value(target, name) : std::string();
 }
 
@@ -167,7 +181,14 @@ std::string vtkIceLook::GetValue(vtkIceMapper* mapper, vtkIcePass* pass,
 std::string vtkIceLook::ApplyPreset(vtkIceMapper* mapper, vtkIcePass* pass,
   vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, const char* path)
 {
-  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera };
+  return vtkIceLook::ApplyPreset(mapper, pass, cubeMaps, camera, nullptr, path);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkIceLook::ApplyPreset(vtkIceMapper* mapper, vtkIcePass* pass,
+  vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, vtkToneMappingPass* toneMapping, const char* path)
+{
+  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, camera, toneMapping };
   if (!Complete(target))
   {
     return NoScene;
@@ -176,4 +197,19 @@ std::string vtkIceLook::ApplyPreset(vtkIceMapper* mapper, vtkIcePass* pass,
   const std::string problem = vtkIceLookTable::ReadPreset(path ? path : "", assignments);
   // ReadPreset checked every line on a scratch scene, so applying cannot stop half-way.
   return problem.empty() ? vtkIceLookTable::ApplyAll(target, assignments) : problem;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceLook::ResetToneMapping(vtkToneMappingPass* toneMapping)
+{
+  if (toneMapping)
+  {
+    vtkIceLookTable::ResetToneMapping(toneMapping);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceLook::AsksForToneMapping(vtkToneMappingPass* toneMapping)
+{
+  return toneMapping && vtkIceLookTable::AsksForToneMapping(toneMapping);
 }

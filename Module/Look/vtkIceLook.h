@@ -30,6 +30,7 @@ class vtkCamera;
 class vtkIceCubeMapPass;
 class vtkIceMapper;
 class vtkIcePass;
+class vtkToneMappingPass;
 
 class LOOKICE_EXPORT vtkIceLook : public vtkObject
 {
@@ -115,6 +116,24 @@ public:
    */
   static std::string ApplyPreset(vtkIceMapper* mapper, vtkIcePass* pass,
     vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, const char* path);
+
+  ///@{
+  /**
+   * The same for a scene whose ice pass is the delegate of a vtkToneMappingPass, which
+   * "tone-mapping" and "exposure" set (without it they are refused). ResetToneMapping puts such a
+   * pass in the state of no tone mapping; AsksForToneMapping says whether its look needs it in the
+   * renderer's passes.
+   */
+  static std::string Apply(vtkIceMapper* mapper, vtkIcePass* pass, vtkIceCubeMapPass* cubeMaps,
+    vtkCamera* camera, vtkToneMappingPass* toneMapping, const char* name, const char* value);
+  static std::string GetValue(vtkIceMapper* mapper, vtkIcePass* pass, vtkIceCubeMapPass* cubeMaps,
+    vtkCamera* camera, vtkToneMappingPass* toneMapping, const char* name);
+  static std::string ApplyPreset(vtkIceMapper* mapper, vtkIcePass* pass,
+    vtkIceCubeMapPass* cubeMaps, vtkCamera* camera, vtkToneMappingPass* toneMapping,
+    const char* path);
+  static void ResetToneMapping(vtkToneMappingPass* toneMapping);
+  static bool AsksForToneMapping(vtkToneMappingPass* toneMapping);
+  ///@}
 
 protected:
   vtkIceLook() = default;

@@ -69,7 +69,11 @@ std::string WritePreset(const Target& target, const std::vector<std::string>& ca
     {
       continue;
     }
-    text += name + " = " + Value(target, name) + "\n";
+    const std::string value = Value(target, name);
+    if (!value.empty()) // a setting of an object the target lacks (its tone mapping)
+    {
+      text += name + " = " + value + "\n";
+    }
   }
   return text;
 }

@@ -7,6 +7,7 @@
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
 #include "vtkNew.h"
+#include "vtkToneMappingPass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +34,7 @@ struct Entry
   Setter Set;
   std::function<void(const Target&, double*)> GetVector; // Vector
   std::function<void(const Target&, const double*)> SetVector;
+  bool ToneMapping = false; // set on Target::ToneMapping, which must be there
 };
 
 std::string Format(double value)
@@ -242,6 +244,30 @@ std::vector<Entry> MakeEntries()
     "cube-map-culling", "leave props outside a face out of its render",
     [](const Target& t) { return t.CubeMaps->GetFrustumCulling() ? 1.0 : 0.0; },
     [](const Target& t, double v) { t.CubeMaps->SetFrustumCulling(v != 0.0); });
+
+  // How the picture's light becomes screen values: VTK's vtkToneMappingPass around the ice pass
+  // ("none" is its Clamp). VTK applies the exposure in its exponential and filmic curves only.
+  choice(
+    "tone-mapping", "how HDR light is mapped to the screen; none clips it at white",
+    { "none", "reinhard", "exponential", "filmic", "aces" },
+    [](const Target& t) {
+      const int type = t.ToneMapping->GetToneMappingType();
+      return type == vtkToneMappingPass::GenericFilmic && t.ToneMapping->GetUseACES() ? 4.0 : type;
+    },
+    [](const Target& t, double v) {
+      const int choice = static_cast<int>(v);
+      t.ToneMapping->SetToneMappingType(std::min(choice, 3));
+      t.ToneMapping->SetUseACES(choice == 4);
+    });
+  e.back().ToneMapping = true;
+  number(
+    "exposure", "exposure in stops (EV): +1 doubles the light (exponential, filmic, aces)",
+    [](vtkIceMapper*, vtkIceCubeMapPass*) { return -10.0; },
+    [](vtkIceMapper*, vtkIceCubeMapPass*) { return 10.0; },
+    [](const Target& t) { return std::log2(static_cast<double>(t.ToneMapping->GetExposure())); },
+    [](
+      const Target& t, double v) { t.ToneMapping->SetExposure(static_cast<float>(std::exp2(v))); });
+  e.back().ToneMapping = true;
 #undef ICE_PROPERTY_NUMBER
 #undef ICE_PROPERTY_INTEGER
 #undef ICE_PROPERTY_SWITCH
@@ -301,7 +327,12 @@ struct Scratch
   vtkNew<vtkIcePass> Pass;
   vtkNew<vtkIceCubeMapPass> CubeMaps;
   vtkNew<vtkCamera> Camera;
-  Target Get() const { return { this->Mapper, this->Pass, this->CubeMaps, this->Camera }; }
+  vtkNew<vtkToneMappingPass> ToneMapping;
+  Scratch() { ResetToneMapping(this->ToneMapping); }
+  Target Get() const
+  {
+    return { this->Mapper, this->Pass, this->CubeMaps, this->Camera, this->ToneMapping };
+  }
 };
 
 Scratch& Defaults()
@@ -309,6 +340,20 @@ Scratch& Defaults()
   static Scratch scratch;
   return scratch;
 }
+}
+
+//------------------------------------------------------------------------------
+void ResetToneMapping(vtkToneMappingPass* pass)
+{
+  pass->SetToneMappingType(vtkToneMappingPass::Clamp);
+  pass->SetExposure(1.0f);
+  pass->SetUseACES(false);
+}
+
+//------------------------------------------------------------------------------
+bool AsksForToneMapping(vtkToneMappingPass* pass)
+{
+  return pass->GetToneMappingType() != vtkToneMappingPass::Clamp;
 }
 
 //------------------------------------------------------------------------------
@@ -385,6 +430,10 @@ std::string Apply(const Target& target, const std::string& name, const std::stri
     return "unknown setting '" + name + "'";
   }
   const std::string bad = "bad " + name + " '" + value + "'";
+  if (entry->ToneMapping && !target.ToneMapping)
+  {
+    return name + " is set on the scene's vtkToneMappingPass, and none was given";
+  }
   switch (entry->Info.Type)
   {
     case Kind::Number:
@@ -473,7 +522,7 @@ std::string Apply(const Target& target, const std::string& name, const std::stri
 std::string Value(const Target& target, const std::string& name)
 {
   const Entry* entry = FindEntry(name);
-  if (!entry)
+  if (!entry || (entry->ToneMapping && !target.ToneMapping))
   {
     return std::string();
   }

@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The look of an ice scene as named settings: every vtkIceMapper and vtkIceCubeMapPass parameter
-// and the camera, each with the library's own range. One table serves ice-render's command-line
+// The look of an ice scene as named settings: every vtkIceMapper and vtkIceCubeMapPass parameter,
+// the tone curve and exposure (vtkToneMappingPass) and the camera, each with the library's own
+// range. One table serves ice-render's command-line
 // options (--NAME VALUE), the preset files (NAME = VALUE, vtkIceLookPreset.cxx), --print-preset,
 // the interactive viewer and, through the wrapped vtkIceLook, Python (the web viewer).
 // Not wrapped: Python reaches it through vtkIceLook.
@@ -18,6 +19,7 @@ class vtkCamera;
 class vtkIceCubeMapPass;
 class vtkIceMapper;
 class vtkIcePass;
+class vtkToneMappingPass;
 
 namespace vtkIceLookTable
 {
@@ -29,7 +31,14 @@ struct Target
   vtkIcePass* Pass = nullptr;
   vtkIceCubeMapPass* CubeMaps = nullptr;
   vtkCamera* Camera = nullptr;
+  // Around the ice pass, for "tone-mapping" and "exposure"; may be null, and they are refused.
+  vtkToneMappingPass* ToneMapping = nullptr;
 };
+
+// Puts `pass` in the state of "no tone mapping" (tone-mapping none, exposure 0): VTK's Clamp.
+LOOKICE_EXPORT void ResetToneMapping(vtkToneMappingPass* pass);
+// Whether the look `pass` holds needs it in the render passes: not when it only clamps.
+LOOKICE_EXPORT bool AsksForToneMapping(vtkToneMappingPass* pass);
 
 enum class Kind
 {

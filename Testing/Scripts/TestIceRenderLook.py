@@ -3,7 +3,8 @@
 """ice-render as a tool: every look option changes the picture, the ice's own settings only where
 the ice is; values outside the library's range are refused with that range in the message;
 presets (shipped and written by --print-preset) round-trip to the same picture; a turntable
-writes its frames (and a video when ffmpeg is installed).
+writes its frames (and a video when ffmpeg is installed); a photographed HDR panorama, found by
+name in Debian's blender-data, is clipped to white without a tone curve and not with one.
 
 usage: TestIceRenderLook.py ICE_RENDER WORK_DIR   (Debian's /usr/bin/python3, for vtk)
 """
@@ -83,6 +84,9 @@ def options_change_the_picture():
         (["--glistening", "--size", "320x240"], ["--glistening-alignment", "8"], True),
         ([], ["--debug-view", "air"], True),
         ([], ["--debug-view", "cracks-unclipped"], False),  # red cracks over everything
+        # A tone curve and exposure act on the whole picture.
+        ([], ["--tone-mapping", "filmic"], False),
+        (["--tone-mapping", "filmic"], ["--exposure", "-1"], False),
         ([], ["--camera-position", "0,0,5"], False),
         ([], ["--focal-point", "0.5,0,0"], False),
         ([], ["--view-up", "1,1,0"], False),
@@ -139,6 +143,8 @@ def bad_values_are_refused():
         (["--color", "1,2,0"], "each in [0, 1]"),
         (["--view-up", "0,0,0"], "not 0,0,0"),
         (["--view-angle", "180"], "[1, 179]"),
+        (["--exposure", "11"], "[-10, 10]"),
+        (["--tone-mapping", "hable"], "one of none, reinhard, exponential, filmic, aces"),
         (["--turntable", "0"], "[1, 3600]"),
         (["--preset", "no-such-look"], "shipped clear, ice-cube, lake, glacier, frosted, snow, paper"),
         (["--no-eta"], "unknown argument '--no-eta'"),
@@ -204,6 +210,39 @@ def turntable():
               not os.path.exists(video) and "no video: ffmpeg is not installed" in result.stdout)
 
 
+PANORAMAS = "/usr/share/blender/datafiles/studiolights/world"  # Debian's blender-data
+
+
+def clipped(pixels):
+    """The fraction of pixels at white."""
+    return sum(1 for p in pixels if min(p) >= 254) / len(pixels)
+
+
+def named_panoramas():
+    path = os.path.join(PANORAMAS, "courtyard.exr")
+    if not os.path.exists(path):
+        result = run(*BASE, "--env", "courtyard", "--out", os.path.join(WORK, "never.png"))
+        check("--env courtyard without blender-data: refused, naming the package",
+              result.returncode == 1 and "apt-get install blender-data" in result.stderr,
+              result.stderr.strip())
+        return
+    by_name = render("courtyard", *BASE, "--env", "courtyard")
+    by_path = render("courtyard-path", *BASE, "--env", path)
+    check("--env courtyard is blender-data's panorama", by_name is not None and
+          by_path is not None and not differing(by_name, by_path, 0))
+    filmic = render("courtyard-filmic", *BASE, "--env", "courtyard", "--tone-mapping", "filmic",
+                    "--exposure", "-1")
+    check("the sunlit courtyard (HDR) is clipped to white without a tone curve, not with filmic",
+          by_name is not None and filmic is not None and clipped(by_name) > 0.2 and
+          clipped(filmic) < clipped(by_name) / 4,
+          "%.1f %% and %.1f %% of the pixels white" % (100 * clipped(by_name or [(0, 0, 0)]),
+                                                       100 * clipped(filmic or [(0, 0, 0)])))
+    result = run(*BASE, "--exposure", "1", "--out", os.path.join(WORK, "exposure.png"))
+    check("--exposure without a curve that applies it: rendered, and said so",
+          result.returncode == 0 and "exposure has no effect with tone-mapping none" in
+          result.stderr, result.stderr.strip())
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)
@@ -211,6 +250,7 @@ def main():
     bad_values_are_refused()
     presets_round_trip()
     turntable()
+    named_panoramas()
     print("%d failed" % check.failures)
     return 1 if check.failures else 0
 
