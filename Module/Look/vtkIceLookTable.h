@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The look of an ice scene as named settings: every vtkIceMapper and vtkIceCubeMapPass parameter,
 // the tone curve and exposure (vtkToneMappingPass) and the camera, each with the library's own
-// range. One table serves ice-render's command-line
-// options (--NAME VALUE), the preset files (NAME = VALUE, vtkIceLookPreset.cxx), --print-preset,
-// the interactive viewer and, through the wrapped vtkIceLook, Python (the web viewer).
+// range. One table serves ice-render's command-line options (--NAME VALUE), the preset files
+// (NAME = VALUE, vtkIceLookPreset.cxx), --print-preset, the interactive viewer and, through the
+// wrapped vtkIceLook, Python (the web viewer).
 // Not wrapped: Python reaches it through vtkIceLook.
 #ifndef vtkIceLookTable_h
 #define vtkIceLookTable_h
