@@ -178,3 +178,30 @@ def test_look_parameters_reach_the_mapper():
     assert actor.GetMapper().GetIceProperty().GetNumberOfCracks() == 5
     assert actor.GetMapper().GetIceProperty().GetIceColor() == pytest.approx((0.8, 0.9, 1.0))
     plotter.close()
+
+
+def test_tone_mapping_compresses_the_light_and_keeps_the_ice():
+    """A tone curve around the ice pass: the picture changes (the sky's brights compressed), the
+    ice is still drawn, and PyVista's passes switched on afterwards keep both."""
+    plain = plotter_with_scene(environment())
+    vtkice.pyvista.add_ice(plain, pv.Sphere(radius=0.8), **CLEAN)
+    before = shot(plain)
+    plotter = plotter_with_scene(environment())
+    vtkice.pyvista.add_ice(plotter, pv.Sphere(radius=0.8), **CLEAN)
+    curves = vtkice.pyvista.tone_mapping(plotter, "filmic", exposure=-1)
+    icepass = vtkice.pyvista.ice_pass(plotter)
+    after = plotter.screenshot(return_img=True).astype(int)
+    assert curves.GetDelegatePass() is icepass and icepass.GetNumberOfIceProps() == 1
+    assert np.abs(after - before).max(axis=2).mean() > 5, "the curve changes the picture"
+    assert after.max() < before.max(), "the brightest pixels are compressed"
+    plotter.enable_ssao()
+    plotter.screenshot(return_img=True)
+    assert icepass.GetNumberOfIceProps() == 1
+    plotter.close()
+
+
+def test_tone_mapping_refuses_an_unknown_curve():
+    plotter = plotter_with_scene(environment())
+    with pytest.raises(ValueError, match="one of none, reinhard, exponential, filmic, aces"):
+        vtkice.pyvista.tone_mapping(plotter, "hable")
+    plotter.close()

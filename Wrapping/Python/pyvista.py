@@ -13,7 +13,8 @@
 ``add_ice`` draws a mesh with a ``vtkIceMapper`` and puts a ``vtkIcePass`` into the plotter's
 render passes where PyVista's own passes expect the pass that draws the scene: the ice works with
 PyVista's SSAO, depth of field, eye-dome lighting and blur, before or after they are switched
-on; with its shadows or SSAA it loses its interior (a warning says so).
+on; with its shadows or SSAA it loses its interior (a warning says so). ``tone_mapping(plotter,
+"filmic", exposure=-1)`` maps a photographed HDR environment's light to the screen.
 """
 import re
 import warnings
@@ -21,10 +22,12 @@ import warnings
 import pyvista as _pv
 from vtkmodules.vtkCommonCore import vtkObject as _vtkObject
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper as _vtkOpenGLPolyDataMapper
+from vtkmodules.vtkRenderingOpenGL2 import vtkToneMappingPass as _vtkToneMappingPass
 
-from . import vtkIceCubeMapPass, vtkIceMapper, vtkIcePaperInterior, vtkIcePass, vtkIceProperty
+from . import (vtkIceCubeMapPass, vtkIceLook, vtkIceMapper, vtkIcePaperInterior, vtkIcePass,
+               vtkIceProperty)
 
-__all__ = ["add_ice", "ice_pass"]
+__all__ = ["add_ice", "ice_pass", "tone_mapping"]
 
 
 def _setter(mapper, name):
@@ -96,6 +99,39 @@ def ice_pass(plotter):
     renderer._vtkice_pass = icepass
     update_keeping_ice()
     return icepass
+
+
+def tone_mapping(plotter, curve="filmic", exposure=0.0):
+    """Maps the plotter's light to the screen through a tone curve, as ``ice-render
+    --tone-mapping CURVE --exposure EV`` does: ``curve`` one of "none", "reinhard", "exponential",
+    "filmic", "aces"; ``exposure`` in stops (+1 doubles the light; VTK applies it in the
+    exponential, filmic and ACES curves). A photographed HDR environment is brighter than white
+    where the sun shines: without a curve it is clipped. The curve is VTK's vtkToneMappingPass,
+    put around the plotter's ice pass the first time; returns it. A bad name or value raises
+    ValueError saying what is accepted.
+    """
+    icepass = ice_pass(plotter)
+    renderer = plotter.renderer
+    curves = getattr(renderer, "_vtkice_tone_mapping", None)
+    if curves is None:
+        curves = _vtkToneMappingPass()
+        vtkIceLook.ResetToneMapping(curves)
+        curves.SetDelegatePass(icepass)
+        collection = renderer._render_passes._pass_collection
+        for i in range(collection.GetNumberOfItems()):
+            if collection.GetItemAsObject(i) is icepass:
+                collection.ReplaceItem(i, curves)
+        renderer._vtkice_tone_mapping = curves
+        if renderer.GetPass() is icepass:
+            renderer.SetPass(curves)
+    # The look table's settings (the names and ranges of ice-render's options); they act on the
+    # tone-mapping pass only, the scratch mapper and cube-map pass stand for the rest of a scene.
+    for name, value in (("tone-mapping", curve), ("exposure", exposure)):
+        problem = vtkIceLook.Apply(vtkIceMapper(), icepass, vtkIceCubeMapPass(),
+                                   renderer.GetActiveCamera(), curves, name, str(value))
+        if problem:
+            raise ValueError("vtkice.pyvista.tone_mapping: " + problem)
+    return curves
 
 
 def add_ice(plotter, mesh, name=None, pickable=True, dynamic_environment=False, **look):
