@@ -42,7 +42,7 @@ stages=" ${VTKICE_LANE_STAGES:-vtk paraview} "
 packages=(
   libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config ccache libglm-dev libopenimageio-dev
   xvfb xauth x11-utils libgl1-mesa-dri libegl-dev libegl-mesa0 dpkg-dev lintian ffmpeg
-  python3-pyvista python3-pytest procps file blender-data
+  python3-pyvista python3-pytest procps file
 )
 # The ParaView stage's packages (install-deps.sh's paraview list), and the development packages
 # ParaView's CMake package looks for that paraview-dev does not depend on (Debian 13 and sid).
