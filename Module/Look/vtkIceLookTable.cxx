@@ -148,11 +148,27 @@ std::vector<Entry> MakeEntries()
     "distance in the ice after which light has attenuation-color (inf: no absorption)",
     AttenuationDistance);
   ICE_PROPERTY_NUMBER("fresnel-power", "exponent P of the Fresnel term (eq 4)", FresnelPower);
+  choice(
+    "fresnel", "how much light the surface reflects: the paper's eq 4 or Fresnel's equations",
+    { "paper", "dielectric" },
+    [](const Target& t) {
+      return static_cast<double>(t.Mapper->GetIceProperty()->GetFresnelModel());
+    },
+    [](const Target& t, double v) {
+      t.Mapper->GetIceProperty()->SetFresnelModel(static_cast<int>(v));
+    });
   ICE_PROPERTY_COLOR("color", "ice colour, red,green,blue each in [0, 1]", IceColor);
   ICE_MAPPER_SWITCH(
     "two-sided", "refract through the back faces too (with the pass)", TwoSidedRefraction);
   ICE_MAPPER_CHOICE("two-sided-method", "how two-sided refraction goes through the ice",
     TwoSidedMethod, "blended-normals", "exit-point");
+  number(
+    "bounces", "faces the light is followed through inside the ice (exit-point; 1: the exit point)",
+    [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->GetMaxBouncesMinValue(); },
+    [](vtkIceMapper* m, vtkIceCubeMapPass*) { return m->GetMaxBouncesMaxValue(); },
+    [](const Target& t) { return static_cast<double>(t.Mapper->GetMaxBounces()); },
+    [](const Target& t, double v) { t.Mapper->SetMaxBounces(static_cast<int>(v)); },
+    Kind::Integer);
   ICE_PROPERTY_NUMBER(
     "back-normal-weight", "weight of the back normal (eq 1, blended-normals)", BackNormalWeight);
   ICE_PROPERTY_INTEGER("cracks", "number of crack surfaces inside the ice", NumberOfCracks);

@@ -22,6 +22,9 @@
 #include "vtkIceScreenInteriorFS.h"
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
+#include "vtkIceTraceFS.h"
+#include "vtkIceTraceTextures.h"
+#include "vtkIceTriangleBVH.h"
 #include "vtkIceTwoSidedFS.h"
 #include "vtkIceNormalMapFS.h"
 #include "vtkIceValueNoise.h"
@@ -49,7 +52,8 @@ enum ShaderParts
   BumpPart = 4,
   NormalMapPart = 8,
   GlisteningPart = 16,
-  RoughPart = 64
+  RoughPart = 64,
+  TracePart = 128
 };
 
 }
@@ -231,7 +235,18 @@ int vtkIceMapper::ShaderVariant() const
   {
     variant |= RoughPart;
   }
+  if (this->TracesInterior())
+  {
+    variant |= TracePart;
+  }
   return variant;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::TracesInterior() const
+{
+  return this->MaxBounces > 1 && this->TwoSidedRefraction &&
+    this->TwoSidedMethod == TwoSidedExitPoint;
 }
 
 //------------------------------------------------------------------------------
@@ -437,6 +452,15 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
         lights.LastLightCount > 0 ? lights.LastLightComplexity : 0, lights.LastLightCount));
   }
   this->AddFrameInputParts(parts);
+  if (variant & TracePart)
+  {
+    // With the exit point's frame inputs only: it replaces that estimate's light.
+    parts.FragmentFunctions +=
+      "\n#ifdef ICE_FRAME_EXIT_POINT\n" + Get(vtkIceTraceFS, "Dec") + "\n#endif\n";
+    parts.Hooks.emplace_back("Refracted",
+      "#ifdef ICE_FRAME_EXIT_POINT\n    if (iceTraceMaxBounces > 0)\n    {\n" +
+        Get(vtkIceTraceFS, "Impl") + "    }\n#endif");
+  }
   if (this->DrawingEdges(ren, act))
   {
     // VTK's edge code (before the lighting) weighs edge pixels by emix; the ice colour replaces
@@ -494,6 +518,10 @@ void vtkIceMapper::SetIceShaderParameters(
   }
 
   const int variant = this->ShaderVariant();
+  if ((variant & TracePart) && program->IsUniformUsed("iceTraceMaxBounces"))
+  {
+    this->SetTraceUniforms(program, ren, act);
+  }
   if (variant & (BumpPart | NormalMapPart))
   {
     program->SetUniformf("iceBumpFrequency",
@@ -519,6 +547,41 @@ void vtkIceMapper::SetIceShaderParameters(
       this->DrawTextures.push_back(noise);
     }
     vtkIceGlistening::SetUniforms(program, this->IceProperty, noise->GetTextureUnit());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
+{
+  if (!this->Trace)
+  {
+    this->Trace.reset(new vtkIceTraceTextures);
+  }
+  if (!this->Trace->Update(this->PreparedInput, vtkIceWorldSpaceMapper::GetPreparedNormalsName()))
+  {
+    // 0 bounces: the shader keeps the exit point's estimate.
+    program->SetUniformi("iceTraceMaxBounces", 0);
+    if (!this->WarnedTraceUnusable)
+    {
+      vtkWarningMacro(<< "MaxBounces " << this->MaxBounces
+                      << " cannot trace this input (no triangles, or more than "
+                      << vtkIceTriangleBVH::MaximumTriangles
+                      << "): the exit point is estimated in image space instead.");
+      this->WarnedTraceUnusable = true;
+    }
+    return;
+  }
+  vtkTextureObject* active[2];
+  this->Trace->Activate(
+    static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act, this->MaxBounces,
+    active);
+  for (vtkTextureObject* texture : active)
+  {
+    if (std::find(this->DrawTextures.begin(), this->DrawTextures.end(), texture) ==
+      this->DrawTextures.end())
+    {
+      this->DrawTextures.push_back(texture);
+    }
   }
 }
 
@@ -613,6 +676,10 @@ void vtkIceMapper::ReleaseGraphicsResources(vtkWindow* win)
     this->PaperInterior->ReleaseGraphicsResources(win);
   }
   this->InteriorTable->ReleaseGraphicsResources(win);
+  if (this->Trace)
+  {
+    this->Trace->ReleaseGraphicsResources(win);
+  }
   if (this->GlisteningNoise)
   {
     this->GlisteningNoise->ReleaseGraphicsResources(win);
@@ -635,6 +702,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TwoSidedRefraction: " << (this->TwoSidedRefraction ? "On" : "Off") << "\n";
   os << indent << "TwoSidedMethod: "
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
+  os << indent << "MaxBounces: " << this->MaxBounces << "\n";
   os << indent << "CullHiddenBackfaces: " << (this->CullHiddenBackfaces ? "On" : "Off") << "\n";
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
   static const char* const interiorMethods[] = { "PaperPasses", "ScreenSpace" };

@@ -56,6 +56,7 @@ class vtkIcePrefilteredEnvironment;
 class vtkIceStaticEnvironment;
 class vtkIceBackfaceCulling;
 class vtkIceGlisteningTexture;
+class vtkIceTraceTextures;
 class vtkProp;
 class vtkTexture;
 class vtkTextureObject;
@@ -112,6 +113,21 @@ public:
   vtkGetMacro(TwoSidedMethod, int);
   void SetTwoSidedMethodToBlendedNormals() { this->SetTwoSidedMethod(TwoSidedBlendedNormals); }
   void SetTwoSidedMethodToExitPoint() { this->SetTwoSidedMethod(TwoSidedExitPoint); }
+  ///@}
+
+  ///@{
+  /**
+   * How many times the light refracted into the ice is followed from face to face inside it, with
+   * TwoSidedExitPoint. 1 (default): to the exit point estimated in image space, as above. Above
+   * 1: the ray is traced through the ice's own triangles (a bounding volume hierarchy built on the
+   * CPU when the input changes, read by the shader from texture buffers); at each hit Fresnel's
+   * equations at the IndexOfRefraction split it into light refracted out and light reflected on
+   * (all of it beyond the critical angle, 49.8 degrees for ice: the mirrored quadrants of a real
+   * ice cube), absorbed along every segment; at the last hit what is left leaves. Non-convex ice
+   * works: a ray leaving it is not followed back in.
+   */
+  vtkSetClampMacro(MaxBounces, int, 1, 16);
+  vtkGetMacro(MaxBounces, int);
   ///@}
 
   ///@{
@@ -316,6 +332,12 @@ protected:
   vtkSmartPointer<vtkIceProperty> IceProperty; // never null
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
+  int MaxBounces = 1;
+  // The triangle tree MaxBounces traces (made on first use), and whether a failed build was said.
+  std::unique_ptr<vtkIceTraceTextures> Trace;
+  bool WarnedTraceUnusable = false;
+  bool TracesInterior() const;
+  void SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
   int InteriorMethod = InteriorScreenSpace;
   int DebugView = DebugOff;
   bool WarnWithoutEnvironment = true;

@@ -176,6 +176,7 @@ void vtkIceProperty::DeepCopy(vtkIceProperty* other)
   std::copy(other->AttenuationColor, other->AttenuationColor + 3, this->AttenuationColor);
   this->AttenuationDistance = other->AttenuationDistance;
   this->FresnelPower = other->FresnelPower;
+  this->FresnelModel = other->FresnelModel;
   this->BackNormalWeight = other->BackNormalWeight;
   std::copy(other->IceColor, other->IceColor + 3, this->IceColor);
   this->Roughness = other->Roughness;
@@ -199,7 +200,7 @@ void vtkIceProperty::DeepCopy(vtkIceProperty* other)
 }
 
 //------------------------------------------------------------------------------
-std::array<vtkIceProperty::ShaderValue, 7> vtkIceProperty::GetShaderValues() const
+std::array<vtkIceProperty::ShaderValue, 8> vtkIceProperty::GetShaderValues() const
 {
   auto scalar = [](const char* name, double value, bool optional) {
     return ShaderValue{ name, 1, { static_cast<float>(value), 0.0f, 0.0f }, optional };
@@ -214,6 +215,7 @@ std::array<vtkIceProperty::ShaderValue, 7> vtkIceProperty::GetShaderValues() con
     color("iceAttenuationColor", this->AttenuationColor),
     scalar("iceInverseAttenuationDistance", 1.0 / this->AttenuationDistance, false),
     scalar("iceFresnelPower", this->FresnelPower, false),
+    scalar("iceDielectricFresnel", this->FresnelModel == FresnelDielectric ? 1.0 : 0.0, true),
     // In the programs of some parts only.
     scalar("iceBackNormalWeight", this->BackNormalWeight, true),
     scalar("iceBumpStrength", this->BumpStrength, true) };
@@ -229,6 +231,8 @@ void vtkIceProperty::PrintSelf(ostream& os, vtkIndent indent)
      << this->AttenuationColor[1] << ", " << this->AttenuationColor[2] << ")\n";
   os << indent << "AttenuationDistance: " << this->AttenuationDistance << "\n";
   os << indent << "FresnelPower: " << this->FresnelPower << "\n";
+  os << indent << "FresnelModel: "
+     << (this->FresnelModel == FresnelDielectric ? "Dielectric" : "Paper") << "\n";
   os << indent << "BackNormalWeight: " << this->BackNormalWeight << "\n";
   os << indent << "IceColor: (" << this->IceColor[0] << ", " << this->IceColor[1] << ", "
      << this->IceColor[2] << ")\n";

@@ -101,6 +101,26 @@ public:
   vtkGetMacro(FresnelPower, double);
   ///@}
 
+  enum FresnelModels
+  {
+    FresnelPaper = 0,     // eq 4's power of 1 - |e.n|, FresnelPower
+    FresnelDielectric = 1 // Fresnel's equations for unpolarised light at the IndexOfRefraction
+  };
+
+  ///@{
+  /**
+   * How much of the light meeting the ice is reflected. FresnelPaper (default): the paper's eq 4,
+   * (1 - |e.n|)^FresnelPower, evaluated per vertex. FresnelDielectric: Fresnel's equations of a
+   * clean air-to-ice interface of the IndexOfRefraction, per fragment (2 % head-on for ice,
+   * rising to all of it at grazing angles), what a path tracer computes; FresnelPower is then not
+   * used.
+   */
+  vtkSetClampMacro(FresnelModel, int, FresnelPaper, FresnelDielectric);
+  vtkGetMacro(FresnelModel, int);
+  void SetFresnelModelToPaper() { this->SetFresnelModel(FresnelPaper); }
+  void SetFresnelModelToDielectric() { this->SetFresnelModel(FresnelDielectric); }
+  ///@}
+
   ///@{
   /**
    * Weight a of the back-face normal in the blended refraction normal (eq 1; the mapper's
@@ -322,7 +342,7 @@ public:
     float Value[3];
     bool Optional;
   };
-  std::array<ShaderValue, 7> GetShaderValues() const; // no allocation: called every draw
+  std::array<ShaderValue, 8> GetShaderValues() const; // no allocation: called every draw
 #endif
 
 protected:
@@ -334,6 +354,7 @@ protected:
   double AttenuationColor[3] = { 1.0, 1.0, 1.0 };
   double AttenuationDistance;
   double FresnelPower = 3.0;
+  int FresnelModel = FresnelPaper;
   double BackNormalWeight = 0.33;
   double IceColor[3] = { 1.0, 1.0, 1.0 };
   double Roughness = 0.0;

@@ -42,6 +42,12 @@ const char* const IceNormalArray = "vtkIceNormals";
 }
 
 //------------------------------------------------------------------------------
+const char* vtkIceWorldSpaceMapper::GetPreparedNormalsName()
+{
+  return IceNormalArray;
+}
+
+//------------------------------------------------------------------------------
 vtkIceWorldSpaceMapper::vtkIceWorldSpaceMapper()
 {
   this->MapDataArrayToVertexAttribute(

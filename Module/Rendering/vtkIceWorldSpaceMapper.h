@@ -119,6 +119,8 @@ protected:
   // silently) rather than an error.
   virtual bool EmptyInputIsPiece() { return false; }
 
+  // The name of PreparedInput's point normals.
+  static const char* GetPreparedNormalsName();
   vtkSmartPointer<vtkPolyData> PreparedInput;
   vtkMTimeType PreparedInputTime = 0;
   vtkPolyData* PreparedSource = nullptr;

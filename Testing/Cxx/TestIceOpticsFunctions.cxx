@@ -81,6 +81,14 @@ int TestIceOpticsFunctions(int, char*[])
         return std::array<double, 4>{ ref::CrackReflectance(x, 1.31), ref::CrackReflectance(x, 1.5),
           ref::CrackReflectance(-x, 1.31), ref::CrackReflectance(x, 1.0) };
       } },
+    { "iceDielectricReflectance",
+      "vec4(iceDielectricReflectance(x, 1.0 / 1.31), iceDielectricReflectance(x, 1.31), "
+      "iceDielectricReflectance(-x, 1.0 / 1.5), iceDielectricReflectance(x, 1.0))",
+      [](double x) {
+        return std::array<double, 4>{ ref::DielectricReflectance(x, 1.0 / 1.31),
+          ref::DielectricReflectance(x, 1.31), ref::DielectricReflectance(-x, 1.0 / 1.5),
+          ref::DielectricReflectance(x, 1.0) };
+      } },
     { "iceFresnel",
       "vec4(iceFresnel(normalize(vec3(sqrt(1.0 - x * x), 0.0, -x)), vec3(0.0, 0.0, 1.0), 3.0), "
       "iceFresnel(normalize(vec3(sqrt(1.0 - x * x), 0.0, -x)), vec3(0.0, 0.0, 1.0), 5.0), 0.0, "

@@ -40,23 +40,30 @@ vec3 iceTransmittance(float pathLength, vec3 attenuationColor, float inverseDist
   return pow(clamp(attenuationColor, 1.0e-4, 1.0), vec3(pathLength * inverseDistance));
 }
 
-// A crack is a thin gap of air in the ice: light in the ice meeting it at cos(angle) =
-// cosIncidence (to its normal) is reflected by Fresnel's equations at the ice-to-air face of
-// index ratio ior (all of it beyond the critical angle, asin(1 / ior): total internal reflection),
-// and the gap's two parallel faces together reflect 2R / (1 + R), their reflections added
-// without interference.
-float iceCrackReflectance(float cosIncidence, float ior)
+// Fresnel's equations for unpolarised light meeting a clean interface at cos(angle) =
+// cosIncidence (to its normal), eta = n_from / n_to: the reflected fraction, 1 beyond the
+// critical angle (total internal reflection, eta > 1 only). Air to ice head-on: 1.8 %.
+float iceDielectricReflectance(float cosIncidence, float eta)
 {
   float cosI = clamp(abs(cosIncidence), 0.0, 1.0);
-  float sinT2 = ior * ior * (1.0 - cosI * cosI);
+  float sinT2 = eta * eta * (1.0 - cosI * cosI);
   if (sinT2 >= 1.0)
   {
     return 1.0;
   }
   float cosT = sqrt(1.0 - sinT2);
-  float rs = (ior * cosI - cosT) / (ior * cosI + cosT);
-  float rp = (ior * cosT - cosI) / (ior * cosT + cosI);
-  float r = 0.5 * (rs * rs + rp * rp);
+  float rs = (eta * cosI - cosT) / (eta * cosI + cosT);
+  float rp = (eta * cosT - cosI) / (eta * cosT + cosI);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// A crack is a thin gap of air in the ice: light in the ice meeting it is reflected by Fresnel's
+// equations at the ice-to-air face of index ratio ior (all of it beyond the critical angle), and
+// the gap's two parallel faces together reflect 2R / (1 + R), their reflections added without
+// interference.
+float iceCrackReflectance(float cosIncidence, float ior)
+{
+  float r = iceDielectricReflectance(cosIncidence, ior);
   return 2.0 * r / (1.0 + r);
 }
 

@@ -47,20 +47,26 @@ inline double Fresnel(const Vec3& e, const Vec3& n, double power)
   return std::pow(std::min(1.0, std::max(1.0e-6, 1.0 - std::abs(glm::dot(e, n)))), power);
 }
 
-// A crack's reflectance (iceCrackReflectance): Fresnel's at the ice-to-air face (1 beyond the
-// critical angle), the thin gap's two faces together 2R / (1 + R).
-inline double CrackReflectance(double cosIncidence, double ior)
+// Fresnel's equations for unpolarised light (iceDielectricReflectance), eta = n_from / n_to: 1
+// beyond the critical angle.
+inline double DielectricReflectance(double cosIncidence, double eta)
 {
   const double cosI = std::min(1.0, std::abs(cosIncidence));
-  const double sinT2 = ior * ior * (1.0 - cosI * cosI);
+  const double sinT2 = eta * eta * (1.0 - cosI * cosI);
   if (sinT2 >= 1.0)
   {
     return 1.0;
   }
   const double cosT = std::sqrt(1.0 - sinT2);
-  const double rs = (ior * cosI - cosT) / (ior * cosI + cosT);
-  const double rp = (ior * cosT - cosI) / (ior * cosT + cosI);
-  const double r = 0.5 * (rs * rs + rp * rp);
+  const double rs = (eta * cosI - cosT) / (eta * cosI + cosT);
+  const double rp = (eta * cosT - cosI) / (eta * cosT + cosI);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// A crack's reflectance (iceCrackReflectance): the thin gap's two faces together 2R / (1 + R).
+inline double CrackReflectance(double cosIncidence, double ior)
+{
+  const double r = DielectricReflectance(cosIncidence, ior);
   return 2.0 * r / (1.0 + r);
 }
 
@@ -101,6 +107,7 @@ struct Material
 {
   double RefractionRatio = 1.0 / 1.31;
   double FresnelPower = 3.0;
+  bool DielectricFresnel = false; // vtkIceProperty::FresnelDielectric
   double BackNormalWeight = 0.33;
   Vec3 Tint = Vec3(1.0);
   Vec3 AttenuationColor = Vec3(1.0);
@@ -116,8 +123,50 @@ Vec3 ShadeWithDirection(const Vec3& e, const Vec3& nFront, const Vec3& refracted
   const Vec3 refracted = environment(refractedDirection) *
     Transmittance(pathLength, material.AttenuationColor, material.InverseAttenuationDistance);
   const Vec3 reflected = environment(Reflect(e, nFront));
-  const double f = std::min(1.0, std::max(0.0, Fresnel(e, nFront, material.FresnelPower)));
+  const double f = material.DielectricFresnel
+    ? DielectricReflectance(glm::dot(e, nFront), material.RefractionRatio)
+    : std::min(1.0, std::max(0.0, Fresnel(e, nFront, material.FresnelPower)));
   return material.Tint * (refracted + (reflected - refracted) * f);
+}
+
+// The light traced through the ice (iceTracedRefraction of vtkIceTraceFS.glsl): refracted in at
+// `position`, then at each of up to maxBounces hits from inside Fresnel's share reflects on and the
+// rest refracts out; at the last hit all that is left leaves, as does a ray that meets nothing.
+// `hit(origin, direction, tMin, t, n)` is the nearest triangle (vtkIceTriangleBVH::Intersect, in
+// world coordinates here); tMin the shader's epsilon.
+template <typename Hit, typename Environment>
+Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, int maxBounces,
+  double tMin, const Material& material, const Hit& hit, const Environment& environment)
+{
+  const double eta = material.RefractionRatio;
+  Vec3 d = Refract(e, nFront, eta);
+  Vec3 p = position;
+  Vec3 throughput(1.0);
+  Vec3 light(0.0);
+  for (int bounce = 1; bounce <= maxBounces; ++bounce)
+  {
+    double t;
+    Vec3 n;
+    if (!hit(p, d, tMin, t, n))
+    {
+      break;
+    }
+    throughput *= Transmittance(t, material.AttenuationColor, material.InverseAttenuationDistance);
+    p += t * d;
+    n = glm::normalize(n);
+    n = glm::dot(n, d) < 0.0 ? -n : n;
+    const Vec3 leaving = Refract(d, -n, 1.0 / eta);
+    if (bounce == maxBounces)
+    {
+      d = leaving;
+      break;
+    }
+    const double r = DielectricReflectance(glm::dot(d, n), 1.0 / eta);
+    light += throughput * (1.0 - r) * environment(leaving);
+    throughput *= r;
+    d = Reflect(d, n);
+  }
+  return light + throughput * environment(d);
 }
 
 // Colour of an ice surface point. `environment(direction)` returns the environment's colour.

@@ -34,6 +34,7 @@ vec3 iceSurfaceEnvironmentColor(vec3 directionWC)
 //ICE::Dec
 in float iceFresnelFactorVSOutput;
 uniform float iceRefractionRatio;
+uniform float iceDielectricFresnel; // 1: vtkIceProperty::FresnelDielectric
 uniform vec3 iceTint;
 uniform vec3 iceAttenuationColor;
 uniform float iceInverseAttenuationDistance;
@@ -44,6 +45,10 @@ uniform float iceInverseAttenuationDistance;
     if (gl_FrontFacing == false) { nFront = -nFront; }
     float fresnel = iceFresnelFactorVSOutput;
     //ICEHOOK::SurfaceNormal
+    if (iceDielectricFresnel > 0.5)
+    {
+      fresnel = iceDielectricReflectance(dot(e, nFront), iceRefractionRatio);
+    }
     vec3 nRefract = nFront;
     //ICEHOOK::RefractionNormal
     vec3 refractedDirection = iceRefract(e, nRefract, iceRefractionRatio);
@@ -54,6 +59,7 @@ uniform float iceInverseAttenuationDistance;
     //ICEHOOK::PathLength
     vec3 refracted = iceSurfaceEnvironmentColor(refractedDirection) *
       iceTransmittance(icePathLength, iceAttenuationColor, iceInverseAttenuationDistance);
+    //ICEHOOK::Refracted
     vec3 reflected = iceSurfaceEnvironmentColor(iceReflect(e, nFront));
     vec3 iceColor = iceTint;
     //ICEHOOK::ScalarColor

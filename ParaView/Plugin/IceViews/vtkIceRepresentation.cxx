@@ -178,8 +178,18 @@ vtkIceProperty* vtkIceRepresentation::GetIceProperty()
 
 vtkIceLookMacro(IndexOfRefraction, double, v);
 vtkIceLookMacro(FresnelPower, double, v);
+vtkIceLookMacro(FresnelModel, int, v);
 vtkIceLookMacro(BackNormalWeight, double, v);
 vtkIceDrawingMacro(TwoSidedRefraction, int, v != 0);
+// The representation has no TwoSidedMethod: tracing (above 1) goes with the exit point it needs.
+void vtkIceRepresentation::SetMaxBounces(int v)
+{
+  this->ForEachIceMapper([v](vtkIceMapper* m) {
+    m->SetMaxBounces(v);
+    m->SetTwoSidedMethod(
+      v > 1 ? vtkIceMapper::TwoSidedExitPoint : vtkIceMapper::TwoSidedBlendedNormals);
+  });
+}
 vtkIceLookMacro(NumberOfCracks, int, v);
 vtkIceLookMacro(CrackSeed, int, v);
 vtkIceLookMacro(CrackIntensity, double, v);

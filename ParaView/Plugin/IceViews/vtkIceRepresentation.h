@@ -49,12 +49,15 @@ public:
   ///@{
   /**
    * The look's parameters, set on the ice property both mappers share (see vtkIceProperty for
-   * meanings and ranges); TwoSidedRefraction, CrackClipping and InteriorMethod on both mappers.
+   * meanings and ranges); TwoSidedRefraction, MaxBounces, CrackClipping and InteriorMethod on both
+   * mappers.
    */
   void SetIndexOfRefraction(double value);
   void SetFresnelPower(double value);
+  void SetFresnelModel(int value);
   void SetBackNormalWeight(double value);
   void SetTwoSidedRefraction(int value);
+  void SetMaxBounces(int value);
   void SetIceColor(double red, double green, double blue);
   void SetAttenuationColor(double red, double green, double blue);
   ///@}

@@ -1,0 +1,295 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkIceTriangleBVH.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkIceTriangleBVH);
+
+namespace
+{
+using Vec = std::array<double, 3>;
+
+struct Triangle
+{
+  Vec Corner[3];
+  Vec Normal[3];
+  Vec Centroid;
+};
+
+struct Builder
+{
+  std::vector<Triangle> Input;
+  std::vector<int> Order;
+  std::vector<float>* Nodes;
+  std::vector<float>* Triangles;
+  int Depth = 0;
+
+  void Bounds(int first, int last, Vec& low, Vec& high, bool centroids) const
+  {
+    low.fill(std::numeric_limits<double>::max());
+    high.fill(-std::numeric_limits<double>::max());
+    for (int i = first; i < last; ++i)
+    {
+      const Triangle& t = this->Input[this->Order[i]];
+      for (int c = 0; c < (centroids ? 1 : 3); ++c)
+      {
+        const Vec& p = centroids ? t.Centroid : t.Corner[c];
+        for (int a = 0; a < 3; ++a)
+        {
+          low[a] = std::min(low[a], p[a]);
+          high[a] = std::max(high[a], p[a]);
+        }
+      }
+    }
+  }
+
+  // Appends the node of Order[first, last) and its subtree; returns its index.
+  int Node(int first, int last, int depth)
+  {
+    this->Depth = std::max(this->Depth, depth);
+    const int index = static_cast<int>(this->Nodes->size() / 8);
+    Vec low;
+    Vec high;
+    this->Bounds(first, last, low, high, false);
+    this->Nodes->insert(this->Nodes->end(),
+      { static_cast<float>(low[0]), static_cast<float>(low[1]), static_cast<float>(low[2]), 0.0f,
+        static_cast<float>(high[0]), static_cast<float>(high[1]), static_cast<float>(high[2]),
+        0.0f });
+    float* node = this->Nodes->data() + 8 * index;
+    if (last - first <= vtkIceTriangleBVH::LeafSize)
+    {
+      node[3] = static_cast<float>(this->Triangles->size() / 24);
+      node[7] = -static_cast<float>(last - first);
+      for (int i = first; i < last; ++i)
+      {
+        const Triangle& t = this->Input[this->Order[i]];
+        for (const Vec* part : { t.Corner, t.Normal })
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            this->Triangles->insert(this->Triangles->end(),
+              { static_cast<float>(part[c][0]), static_cast<float>(part[c][1]),
+                static_cast<float>(part[c][2]), 0.0f });
+          }
+        }
+      }
+      return index;
+    }
+    Vec centreLow;
+    Vec centreHigh;
+    this->Bounds(first, last, centreLow, centreHigh, true);
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+    {
+      if (centreHigh[a] - centreLow[a] > centreHigh[axis] - centreLow[axis])
+      {
+        axis = a;
+      }
+    }
+    // The median split halves the count whatever the shape: the depth stays log2(n / LeafSize).
+    const int middle = first + (last - first) / 2;
+    std::nth_element(this->Order.begin() + first, this->Order.begin() + middle,
+      this->Order.begin() + last, [this, axis](int a, int b) {
+        return this->Input[a].Centroid[axis] < this->Input[b].Centroid[axis];
+      });
+    const int left = this->Node(first, middle, depth + 1);
+    const int right = this->Node(middle, last, depth + 1);
+    node = this->Nodes->data() + 8 * index; // the vector may have grown
+    node[3] = static_cast<float>(left);
+    node[7] = static_cast<float>(right);
+    return index;
+  }
+};
+
+// The ray's parameter interval inside the box [low, high], empty when tNear > tFar.
+void SlabInterval(const double origin[3], const double inverse[3], const float* low,
+  const float* high, double& tNear, double& tFar)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    double t0 = (low[a] - origin[a]) * inverse[a];
+    double t1 = (high[a] - origin[a]) * inverse[a];
+    if (t0 > t1)
+    {
+      std::swap(t0, t1);
+    }
+    tNear = std::max(tNear, t0);
+    tFar = std::min(tFar, t1);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceTriangleBVH::Build(vtkPolyData* surface, vtkDataArray* normals)
+{
+  this->Nodes.clear();
+  this->Triangles.clear();
+  this->Depth = 0;
+  this->Diagonal = 0.0;
+  vtkPoints* points = surface ? surface->GetPoints() : nullptr;
+  if (!points || !normals || normals->GetNumberOfComponents() != 3 ||
+    normals->GetNumberOfTuples() < points->GetNumberOfPoints())
+  {
+    return false;
+  }
+  Builder builder;
+  auto add = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    Triangle t;
+    const vtkIdType ids[3] = { a, b, c };
+    for (int i = 0; i < 3; ++i)
+    {
+      points->GetPoint(ids[i], t.Corner[i].data());
+      normals->GetTuple(ids[i], t.Normal[i].data());
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      t.Centroid[i] = (t.Corner[0][i] + t.Corner[1][i] + t.Corner[2][i]) / 3.0;
+    }
+    builder.Input.push_back(t);
+  };
+  vtkIdType count;
+  const vtkIdType* ids;
+  vtkCellArray* polys = surface->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    for (vtkIdType i = 2; i < count; ++i)
+    {
+      add(ids[0], ids[i - 1], ids[i]);
+    }
+  }
+  vtkCellArray* strips = surface->GetStrips();
+  for (strips->InitTraversal(); strips->GetNextCell(count, ids);)
+  {
+    for (vtkIdType i = 2; i < count; ++i)
+    {
+      add(ids[i - 2], ids[i - 1], ids[i]);
+    }
+  }
+  const vtkIdType triangles = static_cast<vtkIdType>(builder.Input.size());
+  if (triangles == 0 || triangles > MaximumTriangles)
+  {
+    return false;
+  }
+  builder.Order.resize(builder.Input.size());
+  for (size_t i = 0; i < builder.Order.size(); ++i)
+  {
+    builder.Order[i] = static_cast<int>(i);
+  }
+  builder.Nodes = &this->Nodes;
+  builder.Triangles = &this->Triangles;
+  this->Nodes.reserve(static_cast<size_t>(16 * (triangles / LeafSize + 1)));
+  this->Triangles.reserve(static_cast<size_t>(24 * triangles));
+  builder.Node(0, static_cast<int>(triangles), 1);
+  this->Depth = builder.Depth;
+  const float* root = this->Nodes.data();
+  this->Diagonal = std::sqrt(std::pow(root[4] - root[0], 2.0) + std::pow(root[5] - root[1], 2.0) +
+    std::pow(root[6] - root[2], 2.0));
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceTriangleBVH::Intersect(const double origin[3], const double direction[3], double tMin,
+  double tMax, double& t, double normal[3]) const
+{
+  if (this->Nodes.empty())
+  {
+    return false;
+  }
+  double inverse[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    inverse[a] = direction[a] != 0.0 ? 1.0 / direction[a] : 1.0e30;
+  }
+  bool hit = false;
+  t = tMax;
+  int stack[MaximumDepth];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const float* node = this->Nodes.data() + 8 * stack[--top];
+    double tNear = tMin;
+    double tFar = t;
+    SlabInterval(origin, inverse, node, node + 4, tNear, tFar);
+    if (tNear > tFar)
+    {
+      continue;
+    }
+    if (node[7] < 0.0f)
+    {
+      const int first = static_cast<int>(node[3]);
+      for (int i = first; i < first - static_cast<int>(node[7]); ++i)
+      {
+        const float* tri = this->Triangles.data() + 24 * i;
+        double e1[3];
+        double e2[3];
+        double s[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          e1[a] = tri[4 + a] - tri[a];
+          e2[a] = tri[8 + a] - tri[a];
+          s[a] = origin[a] - tri[a];
+        }
+        const double p[3] = { direction[1] * e2[2] - direction[2] * e2[1],
+          direction[2] * e2[0] - direction[0] * e2[2], direction[0] * e2[1] - direction[1] * e2[0] };
+        const double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+        if (det == 0.0)
+        {
+          continue;
+        }
+        const double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
+        const double q[3] = { s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2],
+          s[0] * e1[1] - s[1] * e1[0] };
+        const double v = (direction[0] * q[0] + direction[1] * q[1] + direction[2] * q[2]) / det;
+        const double along = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
+        // Edges widened by 1e-5, as in the shader: a ray along a shared edge meets one of them.
+        if (u < -1.0e-5 || v < -1.0e-5 || u + v > 1.00001 || along <= tMin || along >= t)
+        {
+          continue;
+        }
+        t = along;
+        hit = true;
+        for (int a = 0; a < 3; ++a)
+        {
+          normal[a] = (1.0 - u - v) * tri[12 + a] + u * tri[16 + a] + v * tri[20 + a];
+        }
+      }
+      continue;
+    }
+    // The nearer child is searched first: it is pushed last.
+    const int left = static_cast<int>(node[3]);
+    const int right = static_cast<int>(node[7]);
+    const float* l = this->Nodes.data() + 8 * left;
+    const float* r = this->Nodes.data() + 8 * right;
+    double lNear = tMin;
+    double lFar = t;
+    double rNear = tMin;
+    double rFar = t;
+    SlabInterval(origin, inverse, l, l + 4, lNear, lFar);
+    SlabInterval(origin, inverse, r, r + 4, rNear, rFar);
+    const bool leftFirst = lNear <= rNear;
+    stack[top++] = leftFirst ? right : left;
+    stack[top++] = leftFirst ? left : right;
+  }
+  return hit;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceTriangleBVH::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Triangles: " << this->GetNumberOfTriangles() << "\n";
+  os << indent << "Nodes: " << this->GetNumberOfNodes() << "\n";
+  os << indent << "Depth: " << this->Depth << "\n";
+}

@@ -1,0 +1,142 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
+//ICE::Dec
+// The refracted light traced through the ice's own triangles (vtkIceMapper::MaxBounces > 1), in
+// the tree of vtkIceTriangleBVH (two texels per node, six per triangle; vtkIceTraceTextures).
+// Mirrored on the CPU by vtkIceTriangleBVH::Intersect and vtkIceOpticsReference::TracedRefraction:
+// change them together.
+uniform samplerBuffer iceTraceNodes;
+uniform samplerBuffer iceTraceTriangles;
+uniform mat4 iceTraceWCMC;      // world to the tree's (model) coordinates
+uniform int iceTraceMaxBounces; // hits followed inside the ice
+uniform float iceTraceEpsilon;  // in model units: how far a hit must lie from the ray's start
+
+// The interval of the ray o + t d inside the box [low, high], clipped to (tMin, tMax); empty
+// where x > y. inv is 1 / d, per component.
+vec2 iceTraceSlab(vec3 o, vec3 inv, vec3 low, vec3 high, float tMin, float tMax)
+{
+  vec3 t0 = (low - o) * inv;
+  vec3 t1 = (high - o) * inv;
+  vec3 entering = min(t0, t1);
+  vec3 leaving = max(t0, t1);
+  return vec2(max(tMin, max(entering.x, max(entering.y, entering.z))),
+    min(tMax, min(leaving.x, min(leaving.y, leaving.z))));
+}
+
+// The nearest triangle the ray o + t d (model coordinates) meets with tMin < t < tMax: true with
+// t and the normal interpolated there (unnormalised).
+bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n)
+{
+  vec3 inv = vec3(d.x != 0.0 ? 1.0 / d.x : 1.0e30, d.y != 0.0 ? 1.0 / d.y : 1.0e30,
+    d.z != 0.0 ? 1.0 / d.z : 1.0e30);
+  bool hit = false;
+  t = tMax;
+  n = vec3(0.0);
+  int stack[48];
+  int top = 1;
+  stack[0] = 0;
+  while (top > 0)
+  {
+    --top;
+    int node = stack[top];
+    vec4 low = texelFetch(iceTraceNodes, 2 * node);
+    vec4 high = texelFetch(iceTraceNodes, 2 * node + 1);
+    vec2 span = iceTraceSlab(o, inv, low.xyz, high.xyz, tMin, t);
+    if (span.x > span.y)
+    {
+      continue;
+    }
+    if (high.w < 0.0)
+    {
+      int first = int(low.w);
+      int last = first - int(high.w);
+      for (int i = first; i < last; ++i)
+      {
+        vec3 p0 = texelFetch(iceTraceTriangles, 6 * i).xyz;
+        vec3 e1 = texelFetch(iceTraceTriangles, 6 * i + 1).xyz - p0;
+        vec3 e2 = texelFetch(iceTraceTriangles, 6 * i + 2).xyz - p0;
+        vec3 s = o - p0;
+        vec3 p = cross(d, e2);
+        float det = dot(e1, p);
+        if (det == 0.0)
+        {
+          continue;
+        }
+        vec3 q = cross(s, e1);
+        float u = dot(s, p) / det;
+        float v = dot(d, q) / det;
+        float along = dot(e2, q) / det;
+        // Edges widened by 1e-5: a ray along a shared edge meets one of its triangles.
+        if (u < -1.0e-5 || v < -1.0e-5 || u + v > 1.00001 || along <= tMin || along >= t)
+        {
+          continue;
+        }
+        t = along;
+        hit = true;
+        n = (1.0 - u - v) * texelFetch(iceTraceTriangles, 6 * i + 3).xyz +
+          u * texelFetch(iceTraceTriangles, 6 * i + 4).xyz +
+          v * texelFetch(iceTraceTriangles, 6 * i + 5).xyz;
+      }
+      continue;
+    }
+    // The nearer child is searched first: pushed last.
+    int left = int(low.w);
+    int right = int(high.w);
+    vec2 l = iceTraceSlab(o, inv, texelFetch(iceTraceNodes, 2 * left).xyz,
+      texelFetch(iceTraceNodes, 2 * left + 1).xyz, tMin, t);
+    vec2 r = iceTraceSlab(o, inv, texelFetch(iceTraceNodes, 2 * right).xyz,
+      texelFetch(iceTraceNodes, 2 * right + 1).xyz, tMin, t);
+    bool leftFirst = l.x <= r.x;
+    if (top < 47)
+    {
+      stack[top] = leftFirst ? right : left;
+      stack[top + 1] = leftFirst ? left : right;
+      top += 2;
+    }
+  }
+  return hit;
+}
+
+// The light the eye vector e brings back through the ice it enters at positionWC (front normal
+// nFront, eta = n_air / n_ice): refracted in, then at each of up to iceTraceMaxBounces hits from
+// inside Fresnel's share (iceDielectricReflectance) reflects on and the rest refracts out into
+// the environment; at the last hit all that is left leaves (refracted, or reflected where it
+// cannot), as does a ray that meets no triangle. Absorbed along every segment.
+vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
+{
+  vec3 d = iceRefract(e, nFront, eta);
+  vec3 p = positionWC;
+  vec3 throughput = vec3(1.0);
+  vec3 light = vec3(0.0);
+  mat3 linear = mat3(iceTraceWCMC);
+  for (int bounce = 1; bounce <= iceTraceMaxBounces; ++bounce)
+  {
+    // d is a unit world vector: t is the world distance.
+    vec3 dModel = linear * d;
+    float t;
+    vec3 nModel;
+    if (!iceTraceHit((iceTraceWCMC * vec4(p, 1.0)).xyz, dModel,
+          iceTraceEpsilon / length(dModel), 1.0e30, t, nModel))
+    {
+      break;
+    }
+    throughput *= iceTransmittance(t, iceAttenuationColor, iceInverseAttenuationDistance);
+    p += t * d;
+    // Normals go to the world by the inverse transpose: n * M is transpose(M) n.
+    vec3 n = normalize(nModel * linear);
+    n = dot(n, d) < 0.0 ? -n : n; // outward, along the leaving ray
+    vec3 leaving = iceRefract(d, -n, 1.0 / eta);
+    if (bounce == iceTraceMaxBounces)
+    {
+      d = leaving;
+      break;
+    }
+    float r = iceDielectricReflectance(dot(d, n), 1.0 / eta);
+    light += throughput * (1.0 - r) * iceSurfaceEnvironmentColor(leaving);
+    throughput *= r;
+    d = iceReflect(d, n);
+  }
+  return light + throughput * iceSurfaceEnvironmentColor(d);
+}
+//ICE::Impl
+    refracted = iceTracedRefraction(e, icePositionWCVSOutput, nFront, iceRefractionRatio);

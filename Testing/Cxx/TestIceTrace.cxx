@@ -1,0 +1,282 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The trace through the ice's triangles (vtkIceMapper::MaxBounces) against its CPU reference, one
+// behaviour per case: every interior pixel of the GPU's picture is compared with
+// vtkIceOpticsReference::TracedRefraction evaluated with vtkIceTriangleBVH::Intersect on the CPU
+// (the front hit found the same way; Fresnel's equations at entry), over the DirectionTest cube
+// map. The light splits at face edges and at the critical angle, so the picture has sharp
+// boundaries inside the ice: each pixel's error is the smallest against the references of its
+// 3x3 neighbourhood (a boundary a pixel away is not an error). Cases:
+//   cube       a cube seen from a corner, rotated and scaled by its actor, 6 bounces
+//   torus      a torus (non-convex: rays leave it and are not followed back in), 6 bounces
+//   absorbing  the cube with absorption along the whole path, 3 bounces
+//   bounces    MaxBounces 2 differs from 1 inside a cube, and 1 is the exit point's picture
+#include "IceTestResources.h"
+#include "IceTestUtilities.h"
+#include "vtkIceCubeMapSource.h"
+#include "vtkIceMapper.h"
+#include "vtkIceOpticsReference.h"
+#include "vtkIcePass.h"
+#include "vtkIceProperty.h"
+#include "vtkIceTriangleBVH.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCleanPolyData.h"
+#include "vtkCubeSource.h"
+#include "vtkNew.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using glm::dvec3;
+namespace ref = vtkIceOpticsReference;
+
+vtkSmartPointer<vtkPolyData> Cube()
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetXLength(1.6);
+  cube->SetYLength(1.6);
+  cube->SetZLength(1.6);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  triangles->Update();
+  return triangles->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> Torus()
+{
+  vtkNew<vtkParametricTorus> torus;
+  torus->SetRingRadius(1.0);
+  torus->SetCrossSectionRadius(0.45);
+  vtkNew<vtkParametricFunctionSource> source;
+  source->SetParametricFunction(torus);
+  source->SetUResolution(96);
+  source->SetVResolution(48);
+  source->SetScalarModeToNone();
+  // The source repeats its seams' points: merged, the surface is closed.
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(source->GetOutputPort());
+  clean->ConvertPolysToLinesOff();
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(clean->GetOutputPort());
+  normals->SplittingOff();
+  normals->Update();
+  return normals->GetOutput();
+}
+
+struct Scene
+{
+  vtkNew<vtkIceCubeMapSource> Pattern;
+  vtkNew<vtkTexture> Environment;
+  vtkNew<vtkIceMapper> Mapper;
+  vtkNew<vtkActor> Ice;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkIcePass> Pass;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkIceTriangleBVH> WorldTree; // the surface in world coordinates, for the reference
+  ref::Material Material;
+
+  Scene(vtkPolyData* surface, const double position[3])
+  {
+    this->Pattern->SetPatternToDirectionTest();
+    this->Pattern->SetFaceSize(256);
+    this->Pattern->ConfigureTexture(this->Environment);
+    this->Mapper->SetInputData(surface);
+    IceTest::UseCleanOptics(this->Mapper);
+    this->Mapper->SetTwoSidedMethodToExitPoint();
+    this->Mapper->GetIceProperty()->SetFresnelModelToDielectric();
+    this->Material.DielectricFresnel = true;
+    this->Ice->SetMapper(this->Mapper);
+    this->Renderer->SetEnvironmentTexture(this->Environment);
+    this->Renderer->AddActor(this->Ice);
+    this->Renderer->SetPass(this->Pass);
+    this->Window->SetSize(240, 240);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->AddRenderer(this->Renderer);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(position[0], position[1], position[2]);
+    camera->SetViewAngle(30.0);
+  }
+
+  IceTest::Image Render()
+  {
+    // The reference's tree of the surface where the actor puts it.
+    vtkNew<vtkTransform> placement;
+    placement->SetMatrix(this->Ice->GetMatrix());
+    vtkNew<vtkTransformPolyDataFilter> world;
+    world->SetInputData(this->Mapper->GetInput());
+    world->SetTransform(placement);
+    world->Update();
+    this->WorldTree->Build(world->GetOutput(), world->GetOutput()->GetPointData()->GetNormals());
+    this->Renderer->ResetCameraClippingRange();
+    this->Window->Render();
+    return IceTest::Capture(this->Window);
+  }
+
+  // The reference colour (0..255) of pixel (x, y); false where its ray misses the ice.
+  bool Reference(int x, int y, dvec3& colour) const
+  {
+    double o[3];
+    double d[3];
+    IceTest::PixelRay(this->Renderer, x, y, o, d);
+    const dvec3 e = glm::normalize(dvec3(d[0], d[1], d[2]));
+    const double direction[3] = { e.x, e.y, e.z };
+    double t;
+    double n[3];
+    if (!this->WorldTree->Intersect(o, direction, 0.0, 1.0e30, t, n))
+    {
+      return false;
+    }
+    dvec3 nFront = glm::normalize(dvec3(n[0], n[1], n[2]));
+    nFront = glm::dot(nFront, e) > 0.0 ? -nFront : nFront;
+    const dvec3 position = dvec3(o[0], o[1], o[2]) + t * e;
+    const IceTest::Environment environment = IceTest::PatternEnvironment(this->Pattern);
+    const double epsilon = 1.0e-5 * this->WorldTree->GetDiagonal();
+    auto hit = [this](const dvec3& p, const dvec3& v, double tMin, double& along, dvec3& normal) {
+      const double origin[3] = { p.x, p.y, p.z };
+      const double towards[3] = { v.x, v.y, v.z };
+      double m[3];
+      const bool found = this->WorldTree->Intersect(origin, towards, tMin, 1.0e30, along, m);
+      normal = dvec3(m[0], m[1], m[2]);
+      return found;
+    };
+    const dvec3 refracted = ref::TracedRefraction(e, position, nFront,
+      this->Mapper->GetMaxBounces(), epsilon, this->Material, hit, environment);
+    const dvec3 reflected = environment(ref::Reflect(e, nFront));
+    const double f = ref::DielectricReflectance(glm::dot(e, nFront), this->Material.RefractionRatio);
+    colour = 255.0 * (refracted + (reflected - refracted) * f);
+    return true;
+  }
+
+  // Per interior pixel (its 5x5 neighbourhood on the ice), the smallest largest-channel error
+  // against the references of its 3x3 neighbourhood.
+  IceTest::Stats Compare(const IceTest::Image& image) const
+  {
+    const int w = image.Width;
+    const int h = image.Height;
+    std::vector<dvec3> colours(static_cast<size_t>(w) * h);
+    std::vector<bool> on(colours.size(), false);
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        on[y * w + x] = this->Reference(x, y, colours[y * w + x]);
+      }
+    }
+    std::vector<double> errors;
+    for (int y = 2; y < h - 2; ++y)
+    {
+      for (int x = 2; x < w - 2; ++x)
+      {
+        bool interior = true;
+        for (int dy = -2; dy <= 2 && interior; ++dy)
+        {
+          for (int dx = -2; dx <= 2 && interior; ++dx)
+          {
+            interior = on[(y + dy) * w + x + dx];
+          }
+        }
+        if (!interior)
+        {
+          continue;
+        }
+        double best = 255.0;
+        for (int dy = -1; dy <= 1; ++dy)
+        {
+          for (int dx = -1; dx <= 1; ++dx)
+          {
+            const dvec3& c = colours[(y + dy) * w + x + dx];
+            double worst = 0.0;
+            for (int k = 0; k < 3; ++k)
+            {
+              worst = std::max(worst, std::abs(image.At(x, y)[k] - std::min(255.0, c[k])));
+            }
+            best = std::min(best, worst);
+          }
+        }
+        errors.push_back(best);
+      }
+    }
+    return IceTest::Summarize(errors);
+  }
+};
+
+bool AgainstReference(const std::string& name, vtkPolyData* surface, const double camera[3],
+  int bounces, bool transformed, bool absorbing)
+{
+  Scene scene(surface, camera);
+  scene.Mapper->SetMaxBounces(bounces);
+  if (transformed)
+  {
+    scene.Ice->RotateZ(20.0);
+    scene.Ice->SetScale(1.0, 0.8, 1.1);
+  }
+  if (absorbing)
+  {
+    const double colour[3] = { 0.5, 0.8, 0.95 };
+    scene.Mapper->GetIceProperty()->SetAttenuationColor(colour);
+    scene.Mapper->GetIceProperty()->SetAttenuationDistance(1.0);
+    scene.Material.AttenuationColor = dvec3(0.5, 0.8, 0.95);
+    scene.Material.InverseAttenuationDistance = 1.0;
+  }
+  const IceTest::Image image = scene.Render();
+  bool ok =
+    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), name + ": no OpenGL error");
+  ok = IceTest::ReportReference(
+         name + ", " + std::to_string(bounces) + " bounces, against its CPU reference",
+         scene.Compare(image), 10000) &&
+    ok;
+  return ok;
+}
+
+bool Bounces()
+{
+  const double camera[3] = { 2.6, 2.2, 2.9 };
+  Scene scene(Cube(), camera);
+  const IceTest::Image exitPoint = scene.Render();
+  scene.Mapper->SetMaxBounces(1);
+  const IceTest::Image one = scene.Render();
+  scene.Mapper->SetMaxBounces(2);
+  const IceTest::Image two = scene.Render();
+  const size_t same = IceTest::CountDiffering(exitPoint, one, 0);
+  const size_t changed = IceTest::CountDiffering(one, two, 8);
+  bool ok = IceTest::Expect(
+    same == 0, "MaxBounces 1 is the exit point's picture (" + std::to_string(same) + " differ)");
+  ok = IceTest::Expect(changed > 5000,
+         "MaxBounces 2 follows the light reflected inside the cube (" + std::to_string(changed) +
+           " pixels change by more than 8/255)") &&
+    ok;
+  return ok;
+}
+}
+
+int TestIceTrace(int argc, char* argv[])
+{
+  const double corner[3] = { 2.6, 2.2, 2.9 };
+  const double above[3] = { 0.0, 2.6, 3.6 };
+  return IceTest::RunCases("TestIceTrace", argc, argv,
+    { { "cube", [&] { return AgainstReference("cube", Cube(), corner, 6, true, false); } },
+      { "torus", [&] { return AgainstReference("torus", Torus(), above, 6, false, false); } },
+      { "absorbing",
+        [&] { return AgainstReference("absorbing cube", Cube(), corner, 3, false, true); } },
+      { "bounces", Bounces } });
+}
