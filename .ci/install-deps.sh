@@ -24,7 +24,7 @@ if [ "${1:-}" = paraview ]; then
   recommends=yes
 else
   packages=(
-    libvtk9-dev python3-vtk9 cmake ninja-build g++ pkg-config ccache
+    libvtk9-dev python3-vtk9 python3-numpy cmake ninja-build g++ pkg-config ccache
     libglm-dev libopenimageio-dev
     xvfb xauth libgl1-mesa-dri libegl-dev libegl-mesa0 libosmesa6-dev
     dpkg-dev lintian ffmpeg
