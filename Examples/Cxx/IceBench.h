@@ -62,6 +62,7 @@ struct Configuration
   int FacesPerFrame = 6;
   bool Culling = true;
   bool Moving = false; // a ball circles the ice, moved before every frame
+  int Bounces = 1;     // vtkIceMapper::MaxBounces (exit point)
 
   // Results.
   std::vector<double> Times;    // wall-clock milliseconds per timed frame

@@ -132,6 +132,25 @@ std::vector<Group> DefineGroups()
   }
   groups.push_back(cracks);
 
+  // The trace through the ice's triangles (vtkIceMapper::MaxBounces) on the block and the
+  // teapot (non-convex), clean ice.
+  for (const char* object : { "block", "teapot" })
+  {
+    Group g;
+    g.Id = std::string("bounces-") + object;
+    g.Title = std::string(object) + ", static environment, exit point, ice about 1/5 of the screen";
+    g.Object = object;
+    g.Configurations = { Plain() };
+    for (int bounces : { 1, 2, 4, 8 })
+    {
+      Configuration c = Ice(std::to_string(bounces) + (bounces == 1 ? " bounce" : " bounces"),
+        Material::ExitPoint);
+      c.Bounces = bounces;
+      g.Configurations.push_back(c);
+    }
+    groups.push_back(g);
+  }
+
   for (const char* size : { "1k", "10k", "100k", "1M" })
   {
     Group g;

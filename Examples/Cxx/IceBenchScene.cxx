@@ -126,6 +126,7 @@ IceBench::Scene IceBench::BuildScene(
     if (c.Ice == Material::ExitPoint)
     {
       mapper->SetTwoSidedMethodToExitPoint();
+      mapper->SetMaxBounces(c.Bounces);
     }
     if (c.Ice != Material::OneSided)
     {

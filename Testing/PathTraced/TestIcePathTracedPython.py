@@ -101,6 +101,10 @@ def ice_image(polydata, camera_position, material, fresnel, bounces):
     actor = vtk.vtkActor()
     actor.SetMapper(mapper)
     renderer.AddActor(actor)
+    # The environment behind the ice too, as Mitsuba shows it (only the ice's pixels are compared).
+    sky = vtk.vtkSkybox()
+    sky.SetTexture(texture)
+    renderer.AddActor(sky)
     window = window_for(camera_position, renderer)
     image = pixels(window)
     renderer.SetPass(None)

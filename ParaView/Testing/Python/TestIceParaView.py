@@ -246,4 +246,24 @@ changed = (h.difference(cracked, plain) > 8).sum()
 h.check(changed > 200, "paper passes: the cracks change %d pixels of the sphere" % changed)
 Delete(view)
 
+# 8. Light traced inside the ice: MaxBounces and the dielectric Fresnel model reach the mappers
+# and change a box's picture inside its silhouette only.
+box = Box(XLength=1.6, YLength=1.6, ZLength=1.6)
+view = h.make_view()
+display = Show(box, view)
+display.Representation = "Ice"
+h.clean_ice(display)
+view.CameraPosition = [2.6, 2.2, 2.9]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.0, 1.0, 0.0]
+view.ResetCamera()
+exit_point = h.capture(view, os.path.join(out, "box-blended.png"))
+display.MaxBounces = 8
+display.FresnelModel = 1
+traced = h.capture(view, os.path.join(out, "box-traced.png"))
+changed = (h.difference(traced, exit_point) > 8).sum()
+h.check(changed > 2000, "MaxBounces 8, dielectric Fresnel: %d pixels of the box change" % changed)
+Delete(view)
+Delete(box)
+
 h.finish()
