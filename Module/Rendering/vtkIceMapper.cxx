@@ -573,8 +573,8 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   }
   vtkTextureObject* active[2];
   this->Trace->Activate(
-    static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act, this->MaxBounces,
-    active);
+    static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act, this->IceProperty,
+    this->MaxBounces, active);
   for (vtkTextureObject* texture : active)
   {
     if (std::find(this->DrawTextures.begin(), this->DrawTextures.end(), texture) ==

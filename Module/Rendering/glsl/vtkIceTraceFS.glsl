@@ -11,6 +11,26 @@ uniform mat4 iceTraceWCMC;      // world to the tree's (model) coordinates
 uniform int iceTraceMaxBounces; // hits followed inside the ice
 uniform float iceTraceEpsilon;  // in model units: how far a hit must lie from the ray's start
 
+// The environment seen through the rough ice along a leaving ray. A microfacet tilted by d turns
+// a reflected ray by 2d but a refracted one by (1 - 1/n) d entering and (n - 1) d leaving: the
+// light through both interfaces spreads over a narrower lobe than the reflection, GGX's alpha
+// (roughness^2) in proportion, so it is sampled at its own level (iceTransmissionRoughnessLevel,
+// vtkIceTraceTextures).
+#ifdef ICE_ROUGH_ENVIRONMENT
+uniform float iceTransmissionRoughnessLevel;
+vec3 iceTracedEnvironmentColor(vec3 directionWC)
+{
+  vec3 color = textureLod(iceEnvironmentPrefiltered, iceEnvironmentMatrix * directionWC,
+    iceTransmissionRoughnessLevel).rgb;
+  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+}
+#else
+vec3 iceTracedEnvironmentColor(vec3 directionWC)
+{
+  return iceEnvironmentColor(directionWC);
+}
+#endif
+
 // The interval of the ray o + t d inside the box [low, high], clipped to (tMin, tMax); empty
 // where x > y. inv is 1 / d, per component.
 vec2 iceTraceSlab(vec3 o, vec3 inv, vec3 low, vec3 high, float tMin, float tMax)
@@ -132,11 +152,11 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
       break;
     }
     float r = iceDielectricReflectance(dot(d, n), 1.0 / eta);
-    light += throughput * (1.0 - r) * iceSurfaceEnvironmentColor(leaving);
+    light += throughput * (1.0 - r) * iceTracedEnvironmentColor(leaving);
     throughput *= r;
     d = iceReflect(d, n);
   }
-  return light + throughput * iceSurfaceEnvironmentColor(d);
+  return light + throughput * iceTracedEnvironmentColor(d);
 }
 //ICE::Impl
     refracted = iceTracedRefraction(e, icePositionWCVSOutput, nFront, iceRefractionRatio);
