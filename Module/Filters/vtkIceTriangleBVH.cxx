@@ -53,23 +53,27 @@ struct Builder
     }
   }
 
-  // Appends the node of Order[first, last) and its subtree; returns its index.
-  int Node(int first, int last, int depth)
+  // A child as its parent holds it: its box (two texels), the index of its node or of its first
+  // triangle, and minus its triangle count when it is a leaf (0 for a node).
+  struct Child
+  {
+    Vec Low;
+    Vec High;
+    float Index = 0.0f;
+    float Count = 0.0f;
+  };
+
+  // The child made of Order[first, last): a leaf of at most LeafSize triangles (appended to the
+  // triangles), else a node (appended to the nodes, with its subtree).
+  Child Make(int first, int last, int depth)
   {
     this->Depth = std::max(this->Depth, depth);
-    const int index = static_cast<int>(this->Nodes->size() / 8);
-    Vec low;
-    Vec high;
-    this->Bounds(first, last, low, high, false);
-    this->Nodes->insert(this->Nodes->end(),
-      { static_cast<float>(low[0]), static_cast<float>(low[1]), static_cast<float>(low[2]), 0.0f,
-        static_cast<float>(high[0]), static_cast<float>(high[1]), static_cast<float>(high[2]),
-        0.0f });
-    float* node = this->Nodes->data() + 8 * index;
+    Child child;
+    this->Bounds(first, last, child.Low, child.High, false);
     if (last - first <= vtkIceTriangleBVH::LeafSize)
     {
-      node[3] = static_cast<float>(this->Triangles->size() / 24);
-      node[7] = -static_cast<float>(last - first);
+      child.Index = static_cast<float>(this->Triangles->size() / 24);
+      child.Count = -static_cast<float>(last - first);
       for (int i = first; i < last; ++i)
       {
         const Triangle& t = this->Input[this->Order[i]];
@@ -83,8 +87,17 @@ struct Builder
           }
         }
       }
-      return index;
+      return child;
     }
+    child.Index = static_cast<float>(this->Split(first, last, depth));
+    return child;
+  }
+
+  // Appends the node splitting Order[first, last) in two children; returns its index.
+  int Split(int first, int last, int depth)
+  {
+    const int index = static_cast<int>(this->Nodes->size() / 16);
+    this->Nodes->resize(this->Nodes->size() + 16, 0.0f);
     Vec centreLow;
     Vec centreHigh;
     this->Bounds(first, last, centreLow, centreHigh, true);
@@ -102,11 +115,20 @@ struct Builder
       this->Order.begin() + last, [this, axis](int a, int b) {
         return this->Input[a].Centroid[axis] < this->Input[b].Centroid[axis];
       });
-    const int left = this->Node(first, middle, depth + 1);
-    const int right = this->Node(middle, last, depth + 1);
-    node = this->Nodes->data() + 8 * index; // the vector may have grown
-    node[3] = static_cast<float>(left);
-    node[7] = static_cast<float>(right);
+    const Child children[2] = { this->Make(first, middle, depth + 1),
+      this->Make(middle, last, depth + 1) };
+    float* node = this->Nodes->data() + 16 * index; // the vector may have grown
+    for (const Child& c : children)
+    {
+      *node++ = static_cast<float>(c.Low[0]);
+      *node++ = static_cast<float>(c.Low[1]);
+      *node++ = static_cast<float>(c.Low[2]);
+      *node++ = c.Index;
+      *node++ = static_cast<float>(c.High[0]);
+      *node++ = static_cast<float>(c.High[1]);
+      *node++ = static_cast<float>(c.High[2]);
+      *node++ = c.Count;
+    }
     return index;
   }
 };
@@ -189,11 +211,26 @@ bool vtkIceTriangleBVH::Build(vtkPolyData* surface, vtkDataArray* normals)
   builder.Triangles = &this->Triangles;
   this->Nodes.reserve(static_cast<size_t>(16 * (triangles / LeafSize + 1)));
   this->Triangles.reserve(static_cast<size_t>(24 * triangles));
-  builder.Node(0, static_cast<int>(triangles), 1);
+  // The root is always a node: a surface of LeafSize triangles or fewer gets an empty second
+  // child (count 0, an inverted box no ray enters).
+  if (triangles > LeafSize)
+  {
+    builder.Split(0, static_cast<int>(triangles), 1);
+  }
+  else
+  {
+    const Builder::Child leaf = builder.Make(0, static_cast<int>(triangles), 1);
+    this->Nodes = { static_cast<float>(leaf.Low[0]), static_cast<float>(leaf.Low[1]),
+      static_cast<float>(leaf.Low[2]), leaf.Index, static_cast<float>(leaf.High[0]),
+      static_cast<float>(leaf.High[1]), static_cast<float>(leaf.High[2]), leaf.Count, 1.0f, 1.0f,
+      1.0f, 0.0f, -1.0f, -1.0f, -1.0f, 0.0f };
+  }
   this->Depth = builder.Depth;
-  const float* root = this->Nodes.data();
-  this->Diagonal = std::sqrt(std::pow(root[4] - root[0], 2.0) + std::pow(root[5] - root[1], 2.0) +
-    std::pow(root[6] - root[2], 2.0));
+  Vec low;
+  Vec high;
+  builder.Bounds(0, static_cast<int>(triangles), low, high, false);
+  this->Diagonal = std::sqrt(std::pow(high[0] - low[0], 2.0) + std::pow(high[1] - low[1], 2.0) +
+    std::pow(high[2] - low[2], 2.0));
   this->Modified();
   return true;
 }
@@ -213,74 +250,86 @@ bool vtkIceTriangleBVH::Intersect(const double origin[3], const double direction
   }
   bool hit = false;
   t = tMax;
+  // Nodes to visit and where the ray enters their box: one beyond the nearest hit is skipped.
   int stack[MaximumDepth];
-  int top = 0;
-  stack[top++] = 0;
+  double entries[MaximumDepth];
+  int top = 1;
+  stack[0] = 0;
+  entries[0] = tMin;
+  auto leaf = [&](const float* child) {
+    const int first = static_cast<int>(child[3]);
+    for (int i = first; i < first - static_cast<int>(child[7]); ++i)
+    {
+      const float* tri = this->Triangles.data() + 24 * i;
+      double e1[3];
+      double e2[3];
+      double s[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        e1[a] = tri[4 + a] - tri[a];
+        e2[a] = tri[8 + a] - tri[a];
+        s[a] = origin[a] - tri[a];
+      }
+      const double p[3] = { direction[1] * e2[2] - direction[2] * e2[1],
+        direction[2] * e2[0] - direction[0] * e2[2], direction[0] * e2[1] - direction[1] * e2[0] };
+      const double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+      if (det == 0.0)
+      {
+        continue;
+      }
+      const double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
+      const double q[3] = { s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2],
+        s[0] * e1[1] - s[1] * e1[0] };
+      const double v = (direction[0] * q[0] + direction[1] * q[1] + direction[2] * q[2]) / det;
+      const double along = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
+      // Edges widened by 1e-5, as in the shader: a ray along a shared edge meets one of them.
+      if (u < -1.0e-5 || v < -1.0e-5 || u + v > 1.00001 || along <= tMin || along >= t)
+      {
+        continue;
+      }
+      t = along;
+      hit = true;
+      for (int a = 0; a < 3; ++a)
+      {
+        normal[a] = (1.0 - u - v) * tri[12 + a] + u * tri[16 + a] + v * tri[20 + a];
+      }
+    }
+  };
   while (top > 0)
   {
-    const float* node = this->Nodes.data() + 8 * stack[--top];
-    double tNear = tMin;
-    double tFar = t;
-    SlabInterval(origin, inverse, node, node + 4, tNear, tFar);
-    if (tNear > tFar)
+    --top;
+    if (entries[top] >= t)
     {
       continue;
     }
-    if (node[7] < 0.0f)
+    const float* node = this->Nodes.data() + 16 * stack[top];
+    // Both children's boxes; leaves are searched at once (the hit shortens the rest), nodes pushed
+    // the nearer last.
+    double entry[2];
+    bool enters[2];
+    for (int c = 0; c < 2; ++c)
     {
-      const int first = static_cast<int>(node[3]);
-      for (int i = first; i < first - static_cast<int>(node[7]); ++i)
+      const float* child = node + 8 * c;
+      double tFar = t;
+      entry[c] = tMin;
+      SlabInterval(origin, inverse, child, child + 4, entry[c], tFar);
+      enters[c] = entry[c] <= tFar;
+      if (enters[c] && child[7] < 0.0f)
       {
-        const float* tri = this->Triangles.data() + 24 * i;
-        double e1[3];
-        double e2[3];
-        double s[3];
-        for (int a = 0; a < 3; ++a)
-        {
-          e1[a] = tri[4 + a] - tri[a];
-          e2[a] = tri[8 + a] - tri[a];
-          s[a] = origin[a] - tri[a];
-        }
-        const double p[3] = { direction[1] * e2[2] - direction[2] * e2[1],
-          direction[2] * e2[0] - direction[0] * e2[2], direction[0] * e2[1] - direction[1] * e2[0] };
-        const double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-        if (det == 0.0)
-        {
-          continue;
-        }
-        const double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
-        const double q[3] = { s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2],
-          s[0] * e1[1] - s[1] * e1[0] };
-        const double v = (direction[0] * q[0] + direction[1] * q[1] + direction[2] * q[2]) / det;
-        const double along = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
-        // Edges widened by 1e-5, as in the shader: a ray along a shared edge meets one of them.
-        if (u < -1.0e-5 || v < -1.0e-5 || u + v > 1.00001 || along <= tMin || along >= t)
-        {
-          continue;
-        }
-        t = along;
-        hit = true;
-        for (int a = 0; a < 3; ++a)
-        {
-          normal[a] = (1.0 - u - v) * tri[12 + a] + u * tri[16 + a] + v * tri[20 + a];
-        }
+        leaf(child);
+        enters[c] = false;
       }
-      continue;
     }
-    // The nearer child is searched first: it is pushed last.
-    const int left = static_cast<int>(node[3]);
-    const int right = static_cast<int>(node[7]);
-    const float* l = this->Nodes.data() + 8 * left;
-    const float* r = this->Nodes.data() + 8 * right;
-    double lNear = tMin;
-    double lFar = t;
-    double rNear = tMin;
-    double rFar = t;
-    SlabInterval(origin, inverse, l, l + 4, lNear, lFar);
-    SlabInterval(origin, inverse, r, r + 4, rNear, rFar);
-    const bool leftFirst = lNear <= rNear;
-    stack[top++] = leftFirst ? right : left;
-    stack[top++] = leftFirst ? left : right;
+    const int first = entry[0] <= entry[1] ? 1 : 0; // pushed first: the farther
+    for (int c : { first, 1 - first })
+    {
+      if (enters[c] && entry[c] < t && top < MaximumDepth)
+      {
+        stack[top] = static_cast<int>(node[8 * c + 3]);
+        entries[top] = entry[c];
+        ++top;
+      }
+    }
   }
   return hit;
 }

@@ -7,10 +7,12 @@
  *
  * Build() takes the surface's polygons and triangle strips (polygons split into fans) with point
  * normals and makes a binary tree of axis-aligned boxes, split at the median of the longest axis
- * of the triangles' centroids down to at most LeafSize triangles. GetNodes() holds two RGBA texels
- * per node (box minimum and first child or first triangle; box maximum and second child or minus
- * the triangle count), GetTriangles() six per triangle (three corners, three normals), as the
- * trace of vtkIceTraceFS.glsl reads them from texture buffers. Indices are stored as floats:
+ * of the triangles' centroids down to at most LeafSize triangles. GetNodes() holds four RGBA texels
+ * per node, two per child: its box's minimum with its node's index (or a leaf's first triangle),
+ * its box's maximum with minus its triangle count for a leaf (0 for a node), so a visit reads
+ * both children's boxes at once; node 0 is the root. GetTriangles() holds six texels per
+ * triangle (three corners, three normals), as the trace of vtkIceTraceFS.glsl reads them from
+ * texture buffers. Indices are stored as floats:
  * exact below 2^24, so at most 8 million triangles (Build refuses more). Intersect() is the same
  * traversal on the CPU: the shader's reference.
  */
@@ -49,7 +51,7 @@ public:
   {
     return static_cast<vtkIdType>(this->Triangles.size() / 24);
   }
-  vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size() / 8); }
+  vtkIdType GetNumberOfNodes() const { return static_cast<vtkIdType>(this->Nodes.size() / 16); }
   int GetDepth() const { return this->Depth; }
   // The diagonal of the root box (0 when empty).
   double GetDiagonal() const { return this->Diagonal; }

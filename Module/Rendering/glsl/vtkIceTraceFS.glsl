@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // The refracted light traced through the ice's own triangles (vtkIceMapper::MaxBounces > 1), in
-// the tree of vtkIceTriangleBVH (two texels per node, six per triangle; vtkIceTraceTextures).
+// the tree of vtkIceTriangleBVH (four texels per node, six per triangle; vtkIceTraceTextures).
 // Mirrored on the CPU by vtkIceTriangleBVH::Intersect and vtkIceOpticsReference::TracedRefraction:
 // change them together.
 uniform samplerBuffer iceTraceNodes;
@@ -43,8 +43,47 @@ vec2 iceTraceSlab(vec3 o, vec3 inv, vec3 low, vec3 high, float tMin, float tMax)
     min(tMax, min(leaving.x, min(leaving.y, leaving.z))));
 }
 
+// The triangles of the leaf `child` (its first texel) the ray meets before t: t and the
+// interpolated normal n (unnormalised) of the nearest.
+bool iceTraceLeaf(vec3 o, vec3 d, float tMin, vec4 child, vec4 count, inout float t, inout vec3 n)
+{
+  bool hit = false;
+  int first = int(child.w);
+  int last = first - int(count.w);
+  for (int i = first; i < last; ++i)
+  {
+    vec3 p0 = texelFetch(iceTraceTriangles, 6 * i).xyz;
+    vec3 e1 = texelFetch(iceTraceTriangles, 6 * i + 1).xyz - p0;
+    vec3 e2 = texelFetch(iceTraceTriangles, 6 * i + 2).xyz - p0;
+    vec3 s = o - p0;
+    vec3 p = cross(d, e2);
+    float det = dot(e1, p);
+    if (det == 0.0)
+    {
+      continue;
+    }
+    vec3 q = cross(s, e1);
+    float u = dot(s, p) / det;
+    float v = dot(d, q) / det;
+    float along = dot(e2, q) / det;
+    // Edges widened by 1e-5: a ray along a shared edge meets one of its triangles.
+    if (u < -1.0e-5 || v < -1.0e-5 || u + v > 1.00001 || along <= tMin || along >= t)
+    {
+      continue;
+    }
+    t = along;
+    hit = true;
+    n = (1.0 - u - v) * texelFetch(iceTraceTriangles, 6 * i + 3).xyz +
+      u * texelFetch(iceTraceTriangles, 6 * i + 4).xyz +
+      v * texelFetch(iceTraceTriangles, 6 * i + 5).xyz;
+  }
+  return hit;
+}
+
 // The nearest triangle the ray o + t d (model coordinates) meets with tMin < t < tMax: true with
-// t and the normal interpolated there (unnormalised).
+// t and the normal interpolated there (unnormalised). A visit reads both children's boxes;
+// leaves are searched at once (a hit shortens the rest), nodes pushed the nearer last, each with
+// where the ray enters it, so one beyond the nearest hit is skipped unread.
 bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n)
 {
   vec3 inv = vec3(d.x != 0.0 ? 1.0 / d.x : 1.0e30, d.y != 0.0 ? 1.0 / d.y : 1.0e30,
@@ -53,65 +92,47 @@ bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n
   t = tMax;
   n = vec3(0.0);
   int stack[48];
+  float entries[48];
   int top = 1;
   stack[0] = 0;
+  entries[0] = tMin;
   while (top > 0)
   {
     --top;
+    if (entries[top] >= t)
+    {
+      continue;
+    }
     int node = stack[top];
-    vec4 low = texelFetch(iceTraceNodes, 2 * node);
-    vec4 high = texelFetch(iceTraceNodes, 2 * node + 1);
-    vec2 span = iceTraceSlab(o, inv, low.xyz, high.xyz, tMin, t);
-    if (span.x > span.y)
+    vec4 lowA = texelFetch(iceTraceNodes, 4 * node);
+    vec4 highA = texelFetch(iceTraceNodes, 4 * node + 1);
+    vec4 lowB = texelFetch(iceTraceNodes, 4 * node + 2);
+    vec4 highB = texelFetch(iceTraceNodes, 4 * node + 3);
+    vec2 a = iceTraceSlab(o, inv, lowA.xyz, highA.xyz, tMin, t);
+    if (a.x <= a.y && highA.w < 0.0)
     {
-      continue;
+      hit = iceTraceLeaf(o, d, tMin, lowA, highA, t, n) || hit;
+      a = vec2(1.0, 0.0);
     }
-    if (high.w < 0.0)
+    vec2 b = iceTraceSlab(o, inv, lowB.xyz, highB.xyz, tMin, t);
+    if (b.x <= b.y && highB.w < 0.0)
     {
-      int first = int(low.w);
-      int last = first - int(high.w);
-      for (int i = first; i < last; ++i)
+      hit = iceTraceLeaf(o, d, tMin, lowB, highB, t, n) || hit;
+      b = vec2(1.0, 0.0);
+    }
+    bool enterA = a.x <= a.y && a.x < t;
+    bool enterB = b.x <= b.y && b.x < t;
+    // The farther first, so the nearer is visited next.
+    bool aFirst = a.x > b.x;
+    for (int k = 0; k < 2; ++k)
+    {
+      bool pickA = (k == 0) == aFirst;
+      if ((pickA ? enterA : enterB) && top < 48)
       {
-        vec3 p0 = texelFetch(iceTraceTriangles, 6 * i).xyz;
-        vec3 e1 = texelFetch(iceTraceTriangles, 6 * i + 1).xyz - p0;
-        vec3 e2 = texelFetch(iceTraceTriangles, 6 * i + 2).xyz - p0;
-        vec3 s = o - p0;
-        vec3 p = cross(d, e2);
-        float det = dot(e1, p);
-        if (det == 0.0)
-        {
-          continue;
-        }
-        vec3 q = cross(s, e1);
-        float u = dot(s, p) / det;
-        float v = dot(d, q) / det;
-        float along = dot(e2, q) / det;
-        // Edges widened by 1e-5: a ray along a shared edge meets one of its triangles.
-        if (u < -1.0e-5 || v < -1.0e-5 || u + v > 1.00001 || along <= tMin || along >= t)
-        {
-          continue;
-        }
-        t = along;
-        hit = true;
-        n = (1.0 - u - v) * texelFetch(iceTraceTriangles, 6 * i + 3).xyz +
-          u * texelFetch(iceTraceTriangles, 6 * i + 4).xyz +
-          v * texelFetch(iceTraceTriangles, 6 * i + 5).xyz;
+        stack[top] = int(pickA ? lowA.w : lowB.w);
+        entries[top] = pickA ? a.x : b.x;
+        ++top;
       }
-      continue;
-    }
-    // The nearer child is searched first: pushed last.
-    int left = int(low.w);
-    int right = int(high.w);
-    vec2 l = iceTraceSlab(o, inv, texelFetch(iceTraceNodes, 2 * left).xyz,
-      texelFetch(iceTraceNodes, 2 * left + 1).xyz, tMin, t);
-    vec2 r = iceTraceSlab(o, inv, texelFetch(iceTraceNodes, 2 * right).xyz,
-      texelFetch(iceTraceNodes, 2 * right + 1).xyz, tMin, t);
-    bool leftFirst = l.x <= r.x;
-    if (top < 47)
-    {
-      stack[top] = leftFirst ? right : left;
-      stack[top + 1] = leftFirst ? left : right;
-      top += 2;
     }
   }
   return hit;
