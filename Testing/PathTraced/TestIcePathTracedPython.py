@@ -17,7 +17,9 @@ import vtk
 import vtkice
 from vtk.util import numpy_support
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [HERE, os.path.join(HERE, "..", "Python")]
+import ice_test_helpers  # noqa: E402
 import scenes  # noqa: E402
 
 # What VTK Ice reaches today (mean, 95th percentile; /255), a little above the measured figures
@@ -46,13 +48,7 @@ def window_for(camera_position, renderer):
 
 def pixels(window):
     """The window's RGB as floats in [0, 1], [SIZE, SIZE, 3], row 0 at the top."""
-    window.Render()
-    capture = vtk.vtkWindowToImageFilter()
-    capture.SetInput(window)
-    capture.SetInputBufferTypeToRGB()
-    capture.ReadFrontBufferOff()
-    capture.Update()
-    rgb = numpy_support.vtk_to_numpy(capture.GetOutput().GetPointData().GetScalars())
+    rgb = numpy_support.vtk_to_numpy(ice_test_helpers.grab(window).GetPointData().GetScalars())
     return rgb.reshape(scenes.SIZE, scenes.SIZE, 3)[::-1].astype(float) / 255.0
 
 
@@ -112,19 +108,6 @@ def ice_image(polydata, camera_position, material, fresnel, bounces):
     return image
 
 
-def write_png(image, path):
-    srgb = numpy.where(image <= 0.0031308, 12.92 * image, 1.055 * numpy.power(
-        numpy.clip(image, 0.0031308, None), 1.0 / 2.4) - 0.055)
-    data = vtk.vtkImageData()
-    data.SetDimensions(scenes.SIZE, scenes.SIZE, 1)
-    rgb = (numpy.clip(srgb, 0.0, 1.0) * 255.0 + 0.5).astype(numpy.uint8)[::-1].reshape(-1, 3)
-    data.GetPointData().SetScalars(numpy_support.numpy_to_vtk(rgb.copy(), deep=True))
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(data)
-    writer.Write()
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--fresnel", choices=["paper", "dielectric"], default="dielectric")
@@ -132,8 +115,10 @@ def main():
     parser.add_argument("--pictures")
     parser.add_argument("scene", nargs="*", choices=[[]] + sorted(scenes.SCENES))
     arguments = parser.parse_args()
+    if arguments.pictures:
+        os.makedirs(arguments.pictures, exist_ok=True)
     references = numpy.load(
-        os.path.join(os.path.dirname(os.path.abspath(__file__)), "references.npz"))
+        os.path.join(HERE, "references.npz"))
     failed = 0
     names = arguments.scene or sorted(scenes.SCENES)
     for name in names:
@@ -141,7 +126,7 @@ def main():
         polydata = scenes.mesh(mesh_name)
         image = ice_image(polydata, camera, material, FRESNEL[arguments.fresnel], arguments.bounces)
         if arguments.pictures:
-            write_png(image, os.path.join(arguments.pictures, name + "-vtkice.png"))
+            scenes.write_png(image, os.path.join(arguments.pictures, name + "-vtkice.png"))
         mean, p95, blocks = scenes.comparison(
             image, references[name].astype(float), object_mask(polydata, camera))
         held = arguments.fresnel == "dielectric" and arguments.bounces == BOUNCES

@@ -107,23 +107,6 @@ def check_environment():
         sys.exit("the panorama or camera disagrees with scenes.py: %.2f/255" % (error * 255.0))
 
 
-def write_png(image, path):
-    import vtk
-    from vtk.util import numpy_support
-
-    srgb = numpy.where(image <= 0.0031308, 12.92 * image, 1.055 * numpy.power(
-        numpy.clip(image, 0.0031308, None), 1.0 / 2.4) - 0.055)
-    pixels = (numpy.clip(srgb, 0.0, 1.0) * 255.0 + 0.5).astype(numpy.uint8)[::-1].copy()
-    data = vtk.vtkImageData()
-    data.SetDimensions(scenes.SIZE, scenes.SIZE, 1)
-    data.GetPointData().SetScalars(
-        numpy_support.numpy_to_vtk(pixels.reshape(-1, 3), deep=True))
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(data)
-    writer.Write()
-
-
 def main():
     import vtk
 
@@ -134,6 +117,8 @@ def main():
     parser.add_argument("--output", default=os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "references.npz"))
     arguments = parser.parse_args()
+    if arguments.pictures:
+        os.makedirs(arguments.pictures, exist_ok=True)
     check_environment()
     references = dict(numpy.load(arguments.output)) if os.path.exists(arguments.output) else {}
     with tempfile.TemporaryDirectory() as folder:
@@ -144,7 +129,7 @@ def main():
             image = render(scene_dict(camera, arguments.spp, ice_shape(mesh_file, material)))
             references[name] = scenes.block_means(image).astype(numpy.float16)
             if arguments.pictures:
-                write_png(image, os.path.join(arguments.pictures, name + "-mitsuba.png"))
+                scenes.write_png(image, os.path.join(arguments.pictures, name + "-mitsuba.png"))
             print("rendered", name, flush=True)
     numpy.savez_compressed(arguments.output, **references)
 

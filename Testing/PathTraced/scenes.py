@@ -119,3 +119,20 @@ def comparison(rendered, reference_blocks, mask):
     full = block_means(inner[..., None].astype(float))[..., 0] >= 1.0
     difference = numpy.abs(block_means(rendered) - reference_blocks).mean(axis=-1)[full] * 255.0
     return float(difference.mean()), float(numpy.percentile(difference, 95)), int(full.sum())
+
+
+def write_png(image, path):
+    """A linear image [SIZE, SIZE, 3] (row 0 at the top) as an sRGB PNG (vtk imported here only)."""
+    import vtk
+    from vtk.util import numpy_support
+
+    srgb = numpy.where(image <= 0.0031308, 12.92 * image, 1.055 * numpy.power(
+        numpy.clip(image, 0.0031308, None), 1.0 / 2.4) - 0.055)
+    rgb = (numpy.clip(srgb, 0.0, 1.0) * 255.0 + 0.5).astype(numpy.uint8)[::-1].reshape(-1, 3)
+    data = vtk.vtkImageData()
+    data.SetDimensions(SIZE, SIZE, 1)
+    data.GetPointData().SetScalars(numpy_support.numpy_to_vtk(rgb.copy(), deep=True))
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.Write()
