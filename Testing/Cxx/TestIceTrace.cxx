@@ -34,7 +34,7 @@
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
 #include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
+#include "vtkTransformFilter.h"
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
@@ -122,11 +122,12 @@ struct Scene
     // The reference's tree of the surface where the actor puts it.
     vtkNew<vtkTransform> placement;
     placement->SetMatrix(this->Ice->GetMatrix());
-    vtkNew<vtkTransformPolyDataFilter> world;
+    vtkNew<vtkTransformFilter> world;
     world->SetInputData(this->Mapper->GetInput());
     world->SetTransform(placement);
     world->Update();
-    this->WorldTree->Build(world->GetOutput(), world->GetOutput()->GetPointData()->GetNormals());
+    vtkPolyData* placed = vtkPolyData::SafeDownCast(world->GetOutput());
+    this->WorldTree->Build(placed, placed->GetPointData()->GetNormals());
     this->Renderer->ResetCameraClippingRange();
     this->Window->Render();
     return IceTest::Capture(this->Window);
