@@ -7,7 +7,7 @@ import os
 import sys
 
 import numpy
-from paraview.simple import (ColorBy, Contour, Delete, Elevation, GetColorTransferFunction,
+from paraview.simple import (Box, ColorBy, Contour, Delete, Elevation, GetColorTransferFunction,
                              GroupDatasets, Hide, Show, Sphere, Tessellate, Wavelet)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
