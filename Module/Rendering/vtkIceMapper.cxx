@@ -327,6 +327,14 @@ void vtkIceMapper::WarnSettingsWithoutEffect(bool withPass)
                        "the milky core. Set InteriorMethod to InteriorScreenSpace to see it.");
     this->WarnedCoreWithPaperPasses = true;
   }
+  if (this->MaxBounces > 1 && this->TwoSidedMethod != TwoSidedExitPoint &&
+    !this->WarnedBouncesWithoutExitPoint)
+  {
+    vtkWarningMacro(<< "MaxBounces " << this->MaxBounces
+                    << " shows nothing with TwoSidedBlendedNormals: the light is traced from the "
+                       "exit point's refraction. Call SetTwoSidedMethodToExitPoint() to see it.");
+    this->WarnedBouncesWithoutExitPoint = true;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -61,6 +61,15 @@ def core_in_screen_space(mapper):
     mapper.GetIceProperty().SetMilkyCoreRadius(0.5)
 
 
+def bounces_with_blended_normals(mapper):
+    mapper.SetMaxBounces(4)
+
+
+def bounces_with_the_exit_point(mapper):
+    mapper.SetMaxBounces(4)
+    mapper.SetTwoSidedMethodToExitPoint()
+
+
 def test_snow_without_glistening_warns_once():
     text = warnings_of_one_render(snow, with_pass=True)
     check(text.count("shows nothing") == 1 and "Glistening on" in text, text)
@@ -88,6 +97,16 @@ def test_core_with_paper_passes_warns_once():
 
 def test_core_in_screen_space_says_nothing():
     text = warnings_of_one_render(core_in_screen_space, with_pass=True)
+    check("nothing" not in text, text)
+
+
+def test_bounces_with_blended_normals_warn_once():
+    text = warnings_of_one_render(bounces_with_blended_normals, with_pass=True)
+    check(text.count("shows nothing") == 1 and "SetTwoSidedMethodToExitPoint" in text, text)
+
+
+def test_bounces_with_the_exit_point_say_nothing():
+    text = warnings_of_one_render(bounces_with_the_exit_point, with_pass=True)
     check("nothing" not in text, text)
 
 
