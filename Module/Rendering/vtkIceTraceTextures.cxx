@@ -75,7 +75,8 @@ void vtkIceTraceTextures::Activate(vtkOpenGLRenderWindow* window, vtkShaderProgr
   // A hit nearer than a millionth of the ice's size is the surface the ray starts on.
   program->SetUniformf("iceTraceEpsilon", static_cast<float>(1.0e-5 * this->Tree->GetDiagonal()));
   // World to model: the inverse of the actor's matrix, transposed as VTK uploads matrices.
-  vtkNew<vtkMatrix4x4> wcmc;
+  vtkMatrix4x4* wcmc = this->WorldToModel;
+  wcmc->Identity();
   if (!actor->GetIsIdentity())
   {
     vtkMatrix4x4::Invert(actor->GetMatrix(), wcmc);

@@ -6,6 +6,8 @@
 #ifndef vtkIceTraceTextures_h
 #define vtkIceTraceTextures_h
 
+#include "vtkMatrix4x4.h" // for the member
+#include "vtkNew.h"       // for the member
 #include "vtkSmartPointer.h"
 #include "vtkType.h" // for vtkMTimeType
 
@@ -48,6 +50,7 @@ private:
   vtkSmartPointer<vtkOpenGLBufferObject> TriangleBuffer;
   vtkSmartPointer<vtkTextureObject> Nodes;
   vtkSmartPointer<vtkTextureObject> Triangles;
+  vtkNew<vtkMatrix4x4> WorldToModel; // set every draw: kept, not allocated each time
 
   vtkIceTraceTextures(const vtkIceTraceTextures&) = delete;
   void operator=(const vtkIceTraceTextures&) = delete;

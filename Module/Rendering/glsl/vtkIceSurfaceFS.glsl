@@ -19,11 +19,15 @@ vec3 iceEnvironmentColor(vec3 directionWC)
 #ifdef ICE_ROUGH_ENVIRONMENT
 uniform samplerCube iceEnvironmentPrefiltered;
 uniform float iceRoughnessLevel;
+vec3 icePrefilteredEnvironmentColor(vec3 directionWC, float level)
+{
+  vec3 color =
+    textureLod(iceEnvironmentPrefiltered, iceEnvironmentMatrix * directionWC, level).rgb;
+  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+}
 vec3 iceSurfaceEnvironmentColor(vec3 directionWC)
 {
-  vec3 color = textureLod(
-    iceEnvironmentPrefiltered, iceEnvironmentMatrix * directionWC, iceRoughnessLevel).rgb;
-  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+  return icePrefilteredEnvironmentColor(directionWC, iceRoughnessLevel);
 }
 #else
 vec3 iceSurfaceEnvironmentColor(vec3 directionWC)

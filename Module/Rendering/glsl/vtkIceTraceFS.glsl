@@ -20,9 +20,7 @@ uniform float iceTraceEpsilon;  // in model units: how far a hit must lie from t
 uniform float iceTransmissionRoughnessLevel;
 vec3 iceTracedEnvironmentColor(vec3 directionWC)
 {
-  vec3 color = textureLod(iceEnvironmentPrefiltered, iceEnvironmentMatrix * directionWC,
-    iceTransmissionRoughnessLevel).rgb;
-  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+  return icePrefilteredEnvironmentColor(directionWC, iceTransmissionRoughnessLevel);
 }
 #else
 vec3 iceTracedEnvironmentColor(vec3 directionWC)
