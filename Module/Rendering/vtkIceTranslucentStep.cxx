@@ -60,6 +60,7 @@ vtkStandardNewMacro(vtkIceTranslucentStep);
 vtkIceTranslucentStep::vtkIceTranslucentStep()
 {
   vtkNew<vtkTranslucentPass> translucent;
+  this->Plain = translucent;
   this->OrderIndependent = vtkSmartPointer<vtkIceOrderIndependentTranslucentPass>::New();
   this->OrderIndependent->SetTranslucentPass(translucent);
   this->Peeling = vtkSmartPointer<vtkDualDepthPeelingPass>::New();
@@ -76,7 +77,11 @@ void vtkIceTranslucentStep::Render(const vtkRenderState* s)
   if (HasTranslucentPolygonalGeometry(s))
   {
     vtkRenderPass* pass = this->OrderIndependent;
-    if (renderer->GetUseDepthPeeling())
+    if (s->GetFrameBuffer() && !renderer->GetUseDepthPeeling())
+    {
+      pass = this->Plain;
+    }
+    else if (renderer->GetUseDepthPeeling())
     {
       // The Set macros change nothing when the values are the same.
       this->Peeling->SetMaximumNumberOfPeels(renderer->GetMaximumNumberOfPeels());

@@ -4,7 +4,10 @@
 // renderer's settings every frame: order-independent translucency, or dual depth peeling
 // (UseDepthPeeling) with the renderer's MaximumNumberOfPeels and OcclusionRatio, volumes peeled
 // with the translucent geometry (UseDepthPeelingForVolumes); skipped when no prop has translucent
-// polygons; then FXAA (UseFXAA, FXAAOptions), before volumes and overlays as the renderer applies
+// polygons. Inside another pass's framebuffer (vtkToneMappingPass around vtkIcePass) it draws
+// as vtkRenderStepsPass does there, with vtkTranslucentPass: VTK's order-independent pass takes
+// the opaque depth by a blit from that framebuffer, which fails when the depth formats differ,
+// and its translucent geometry then covers everything. Then FXAA (UseFXAA, FXAAOptions), before volumes and overlays as the renderer applies
 // it. It owns the VTK passes it runs; ReleaseGraphicsResources frees them.
 #ifndef vtkIceTranslucentStep_h
 #define vtkIceTranslucentStep_h
@@ -15,6 +18,7 @@
 class vtkDualDepthPeelingPass;
 class vtkOpenGLFXAAFilter;
 class vtkOrderIndependentTranslucentPass;
+class vtkTranslucentPass;
 class vtkVolumetricPass;
 
 class vtkIceTranslucentStep : public vtkRenderPass
@@ -34,6 +38,7 @@ protected:
 
 private:
   vtkSmartPointer<vtkOrderIndependentTranslucentPass> OrderIndependent;
+  vtkSmartPointer<vtkTranslucentPass> Plain;
   vtkSmartPointer<vtkDualDepthPeelingPass> Peeling;
   vtkSmartPointer<vtkVolumetricPass> PeeledVolumes;
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
