@@ -40,6 +40,16 @@ int main(int argc, char* argv[])
     return parsed;
   }
 
+  if (options.Environment.empty())
+  {
+    options.Environment = IceRenderOptions::DefaultEnvironment();
+  }
+  // A photographed environment is brighter than white: tone mapped unless the look says how
+  // (--print-preset prints the curve, so the printed look renders the same).
+  if (IceRenderOptions::WantsToneMapping(options.Environment, options.Look))
+  {
+    options.Look.insert(options.Look.begin(), { "tone-mapping", "filmic" });
+  }
   if (options.PrintPreset)
   {
     // The library's defaults with the preset and the options applied (checked already).
@@ -101,7 +111,10 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkRenderer> renderer;
   IceScene::Options sceneOptions;
-  sceneOptions.Landscape = !options.Static;
+  // The small landscape belongs to the built-in sky; any other environment gets the ground.
+  const bool sky = options.Environment == "sky";
+  sceneOptions.Landscape = !options.Static && sky;
+  sceneOptions.Ground = !options.Static && !sky && options.Environment != "test";
   sceneOptions.DynamicEnvironment = !options.Static;
   vtkActor* ice = IceScene::Populate(renderer, model, environment, sceneOptions);
   vtkIcePass* pass = vtkIcePass::SafeDownCast(renderer->GetPass());

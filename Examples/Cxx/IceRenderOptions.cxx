@@ -5,11 +5,14 @@
 #include "IceHeadless.h"
 #include "vtkIceModelFileChecks.h"
 #include "IceOutputFile.h"
+#include "IceScene.h"
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <sys/stat.h>
 #include <string>
@@ -26,17 +29,20 @@ namespace IceRenderOptions
 namespace
 {
 const char* const Usage =
-  "usage: ice-render [--model teapot|block|sphere|FILE] [--env sky|test|NAME|PATH] [--size WxH]\n"
-  "                  [--out FILE] [--static] [--interactive] [--turntable N [--rate FPS]]\n"
+  "usage: ice-render [--model cube|teapot|block|sphere|FILE] [--env NAME|sky|test|PATH]\n"
+  "                  [--size WxH]"
+  " [--out FILE] [--static] [--interactive] [--turntable N [--rate FPS]]\n"
   "                  [--preset NAME|FILE] [--print-preset] [look and camera options]\n"
   "                  [--backend auto|x|egl|osmesa]\n"
-  "Renders a model as ice (default: the teapot in a small landscape, the " VTKICE_DEFAULT_PRESET
-  " look)\nto ice.png.\n"
-  "  --model  teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file; default teapot\n"
-  "  --env    sky (default), test, a folder with cube faces px nx py ny pz nz (any image type), a\n"
-  "           cross image (4:3 or 3:4) or an equirectangular panorama (2:1; .hdr/.exr too); or\n"
-  "           a photographed HDR panorama of Debian's blender-data by name: city, courtyard,\n"
-  "           forest, interior, night, studio, sunrise, sunset (with --tone-mapping filmic)\n"
+  "Renders a model as ice (default: an ice cube on the ground in the forest panorama, the\n"
+  VTKICE_DEFAULT_PRESET " look, tone mapped) to ice.png.\n"
+  "  --model  cube, teapot, block, sphere or a .vtp/.vtk/.stl/.obj/.ply file; default cube\n"
+  "  --env    a photographed HDR panorama of Debian's blender-data by name: city, courtyard,\n"
+  "           forest (default), interior, night, studio, sunrise, sunset (the ice on a ground\n"
+  "           with its shadow; --tone-mapping filmic unless the look names a curve); sky (the\n"
+  "           small landscape; the default where blender-data is missing), test, a folder with\n"
+  "           cube faces px nx py ny pz nz (any image type), a cross image (4:3 or 3:4) or an\n"
+  "           equirectangular panorama (2:1; .hdr/.exr too)\n"
   "  --size   image size WxH, each in [16, 8192], default 1024x768\n"
   "  --out    output image, .png or .jpg (default ice.png); replaced only once the new image\n"
   "           is complete: a failed or interrupted run leaves the old file as it was\n"
@@ -225,6 +231,32 @@ bool IsFile(const std::string& path)
 }
 
 //------------------------------------------------------------------------------
+std::string DefaultEnvironment()
+{
+  // Silently: the lanes and scripts without the package keep their one-line messages, and
+  // --help says which environment the default is where it is missing.
+  return std::ifstream(IceScene::PanoramaFolder() + "/forest.exr").good() ? "forest" : "sky";
+}
+
+bool WantsToneMapping(const std::string& environment, const vtkIceLookTable::Assignments& look)
+{
+  for (const auto& setting : look)
+  {
+    if (setting.first == "tone-mapping")
+    {
+      return false;
+    }
+  }
+  const std::vector<std::string>& names = IceScene::Panoramas();
+  if (std::find(names.begin(), names.end(), environment) != names.end())
+  {
+    return true;
+  }
+  std::string ext = environment.size() > 4 ? environment.substr(environment.size() - 4) : "";
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".hdr" || ext == ".exr";
+}
+
 int Fail(const std::string& message, int code)
 {
   // Arguments and file names are echoed: terminal escapes in them are not passed on.

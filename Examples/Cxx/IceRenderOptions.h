@@ -14,8 +14,9 @@ namespace IceRenderOptions
 {
 struct Options
 {
-  std::string Model = "teapot";
-  std::string Environment = "sky";
+  std::string Model = "cube";
+  // Empty: DefaultEnvironment().
+  std::string Environment;
   std::string Output = "ice.png";
   std::string Backend; // empty: $VTKICE_BACKEND, else auto
   int Width = 1024;
@@ -34,6 +35,14 @@ struct Options
 // Returns -1 when the arguments are fine, otherwise the exit code (--help: 0; errors, with one
 // line on standard error: 2).
 int Parse(int argc, char* argv[], Options& options);
+
+// The environment without --env: the forest panorama, or "sky" where Debian's blender-data is
+// not installed.
+std::string DefaultEnvironment();
+
+// Whether the look should be tone mapped by default in `environment`: a photographed HDR
+// panorama (a name of IceScene::Panoramas(), an .hdr or .exr file) and no curve in `look`.
+bool WantsToneMapping(const std::string& environment, const vtkIceLookTable::Assignments& look);
 
 // Prints "ice-render: MESSAGE" on standard error (made printable) and returns `code`.
 int Fail(const std::string& message, int code);

@@ -17,7 +17,8 @@ class vtkTexture;
 
 namespace IceScene
 {
-// "teapot", "block", "sphere" or a .vtp/.vtk/.stl/.obj/.ply file. The model is centred at the
+// "cube" (an ice cube: vtkIceBlockSource nearly flat, edges slightly rounded), "teapot", "block",
+// "sphere" or a .vtp/.vtk/.stl/.obj/.ply file. The model is centred at the
 // origin and scaled so its largest extent is 2. Returns nullptr and sets `error` on failure;
 // `warning` (when given) says what of a file was left out (IceReading::ReadPolyDataIsolated).
 vtkSmartPointer<vtkPolyData> LoadModel(
@@ -51,13 +52,16 @@ struct Options
 {
   // A ground with rocks and trees around the ice, lit by the sky's sun.
   bool Landscape = true;
+  // A grey ground under the ice with its soft contact shadow, fading into the environment
+  // (IceGround): the ice stands in a photographed panorama instead of floating.
+  bool Ground = false;
   // The ice reflects and refracts a cube map of the scene around it (vtkIceCubeMapPass) instead
   // of the environment texture alone.
   bool DynamicEnvironment = true;
 };
 
 // Sets a vtkIcePass on the renderer (two-sided refraction), adds the skybox, the environment, the
-// landscape if asked and an ice actor for `model`, and frames the camera.
+// landscape or the ground if asked and an ice actor for `model`, and frames the camera.
 // Returns the ice actor (its mapper is a vtkIceMapper).
 vtkActor* Populate(
   vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment, const Options& options = {});

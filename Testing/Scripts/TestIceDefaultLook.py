@@ -13,6 +13,8 @@ from ice_render_tool import Checks, render as render_tool
 
 ICE_RENDER, WORK = sys.argv[1], sys.argv[2]
 SIZE = "480x360"
+# The default look has no cracks; asked for, they show as sheets in it.
+CRACKS = ("--cracks", "3", "--crack-seed", "2")
 check = Checks()
 
 
@@ -38,7 +40,7 @@ def mean(values):
 def check_crack_sheets(look, width):
     """Where the block's cracks are (the debug view's red), the cracks change most pixels of their
     area and of their outline against the same look without cracks."""
-    debug = render("block-cracks", "--model", "block", "--debug-view", "cracks-clipped")
+    debug = render("block-cracks", "--model", "block", *CRACKS, "--debug-view", "cracks-clipped")
     no_cracks = render("block-no-cracks", "--model", "block", "--cracks", "0")
     crack = set(i for i, p in enumerate(debug) if p[0] >= 200 and p[1] <= 60 and p[2] <= 60)
     outline = [i for i in crack
@@ -89,7 +91,7 @@ def main():
             centre, rim = mean(whiter["centre"]), mean(whiter["rim"])
             check("the block's centre is milkier than its rim", centre >= 20 and centre >= 3 * rim,
                   "the core whitens the centre by %.1f/255, the rim by %.1f/255" % (centre, rim))
-            check_crack_sheets(look, width)
+            check_crack_sheets(render("block-with-cracks", "--model", model, *CRACKS), width)
     check("thick ice (the block) bluer than thin ice (the teapot's walls)",
           blue_shift["block"] >= 15 and blue_shift["block"] >= 1.5 * blue_shift["teapot"],
           "blue over red from absorption: block %.1f/255, teapot %.1f/255"

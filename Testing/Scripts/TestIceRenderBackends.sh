@@ -50,7 +50,7 @@ compare() {
 
 # The criterion: no X at all, the default command, the same picture as the X path.
 mkdir -p headless && cd headless || exit 1
-expect_ok "env -u DISPLAY ice-render" "wrote ice.png (1024x768, model teapot, back end egl)" \
+expect_ok "env -u DISPLAY ice-render" "wrote ice.png (1024x768, model cube, back end egl)" \
   env -u DISPLAY "$ice_render"
 cd .. || exit 1
 expect_ok "ice-render --backend x" "back end x" "$ice_render" --backend x --out ice-x.png
@@ -63,7 +63,7 @@ fi
 # The X render is the reviewed picture (the baseline of Cxx.TestIceTeapot is the same scene with
 # the library's defaults: the paper preset).
 expect_ok "ice-render --backend x at 400x300" "back end x" \
-  "$ice_render" --backend x --preset paper --size 400x300 --out x-400x300.png
+  "$ice_render" --backend x --model teapot --env sky --preset paper --size 400x300 --out x-400x300.png
 compare x-400x300.png "$baseline" --alternatives
 
 # auto: x with a display, egl without, osmesa without EGL.

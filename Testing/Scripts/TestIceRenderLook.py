@@ -18,7 +18,8 @@ from ice_render_tool import Checks, read_png, render as render_tool, run as run_
 ICE_RENDER, WORK = sys.argv[1], sys.argv[2]
 SIZE = "96x72"
 # The library's defaults (the paper preset): each option changes that look.
-BASE = ["--model", "sphere", "--static", "--size", SIZE, "--preset", "paper"]
+# The built-in sky: the default environment, a photographed panorama, would be tone mapped.
+BASE = ["--model", "sphere", "--env", "sky", "--static", "--size", SIZE, "--preset", "paper"]
 check = Checks()
 
 
@@ -104,7 +105,7 @@ def options_change_the_picture():
         mask = large_ice if "320x240" in needs else ice
         compare(before, mask, needs + args, ice_only, render("option", *BASE, *needs, *args))
     # The dynamic cube map shows the landscape around the ice: its settings, in that scene.
-    landscape = ["--model", "sphere", "--size", SIZE]
+    landscape = ["--model", "sphere", "--env", "sky", "--size", SIZE]
     default = render("landscape", *landscape)
     depth = render("landscape-mask", *landscape, "--debug-view", "front-depth")
     ice = dilate(differing(default, depth, 0), 96, 72, 3)
@@ -230,12 +231,15 @@ def named_panoramas():
               result.returncode == 1 and "apt-get install blender-data" in result.stderr,
               result.stderr.strip())
         return
-    by_name = render("courtyard", *BASE, "--env", "courtyard")
-    by_path = render("courtyard-path", *BASE, "--env", path)
+    by_name = render("courtyard", *BASE, "--env", "courtyard", "--tone-mapping", "none")
+    by_path = render("courtyard-path", *BASE, "--env", path, "--tone-mapping", "none")
     check("--env courtyard is blender-data's panorama", by_name is not None and
           by_path is not None and not differing(by_name, by_path, 0))
     filmic = render("courtyard-filmic", *BASE, "--env", "courtyard", "--tone-mapping", "filmic",
                     "--exposure", "-1")
+    default = render("courtyard-default", *BASE, "--env", "courtyard", "--exposure", "-1")
+    check("a photographed panorama is tone mapped with filmic unless the look names a curve",
+          default is not None and filmic is not None and not differing(default, filmic, 0))
     check("the sunlit courtyard (HDR) is clipped to white without a tone curve, not with filmic",
           by_name is not None and filmic is not None and clipped(by_name) > 0.2 and
           clipped(filmic) < clipped(by_name) / 4,

@@ -1,0 +1,207 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
+#include "IceGround.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkTexture.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace IceGround
+{
+namespace
+{
+// A separable Gaussian blur of an n x n image, sigma in texels (the border repeats).
+std::vector<double> Blur(const std::vector<double>& image, int n, double sigma)
+{
+  const int radius = std::max(1, static_cast<int>(std::ceil(3.0 * sigma)));
+  std::vector<double> kernel(2 * radius + 1);
+  double sum = 0.0;
+  for (int k = -radius; k <= radius; ++k)
+  {
+    kernel[k + radius] = std::exp(-0.5 * k * k / (sigma * sigma));
+    sum += kernel[k + radius];
+  }
+  for (double& k : kernel)
+  {
+    k /= sum;
+  }
+  std::vector<double> rows(image.size());
+  std::vector<double> out(image.size());
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      double v = 0.0;
+      for (int k = -radius; k <= radius; ++k)
+      {
+        v += kernel[k + radius] * image[j * n + std::clamp(i + k, 0, n - 1)];
+      }
+      rows[j * n + i] = v;
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      double v = 0.0;
+      for (int k = -radius; k <= radius; ++k)
+      {
+        v += kernel[k + radius] * rows[std::clamp(j + k, 0, n - 1) * n + i];
+      }
+      out[j * n + i] = v;
+    }
+  }
+  return out;
+}
+}
+
+vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize, int texels)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(model);
+  triangles->PassLinesOff();
+  triangles->PassVertsOff();
+  triangles->Update();
+  vtkPolyData* surface = triangles->GetOutput();
+  double bounds[6];
+  model->GetBounds(bounds);
+  const double floor = bounds[2];
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1.0e-9 });
+  // A surface this far above the ground (a fraction of the model) shades it e times less: the
+  // shadow is darkest where the ice touches and fades where the ice rises.
+  const double falloff = 0.12 * extent;
+  const double texel = 2.0 * halfSize / texels;
+
+  // The footprint: for each texel the nearest the surface comes to the ground above it.
+  std::vector<double> cover(static_cast<size_t>(texels) * texels, 0.0);
+  vtkPoints* points = surface->GetPoints();
+  vtkCellArray* polys = surface->GetPolys();
+  vtkNew<vtkIdList> ids;
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  {
+    if (ids->GetNumberOfIds() != 3)
+    {
+      continue;
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      points->GetPoint(ids->GetId(k), p[k]);
+    }
+    // Texel coordinates: i along x, j from +z to -z (the ground's texture runs so).
+    double u[3], v[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      u[k] = (p[k][0] + halfSize) / texel - 0.5;
+      v[k] = (halfSize - p[k][2]) / texel - 0.5;
+    }
+    const double area = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
+    if (std::abs(area) < 1.0e-12)
+    {
+      continue; // seen edge on from below: it covers nothing
+    }
+    const int i0 = std::max(0, static_cast<int>(std::floor(std::min({ u[0], u[1], u[2] }))));
+    const int i1 = std::min(texels - 1, static_cast<int>(std::ceil(std::max({ u[0], u[1], u[2] }))));
+    const int j0 = std::max(0, static_cast<int>(std::floor(std::min({ v[0], v[1], v[2] }))));
+    const int j1 = std::min(texels - 1, static_cast<int>(std::ceil(std::max({ v[0], v[1], v[2] }))));
+    for (int j = j0; j <= j1; ++j)
+    {
+      for (int i = i0; i <= i1; ++i)
+      {
+        const double b1 = ((i - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (j - v[0])) / area;
+        const double b2 = ((u[1] - u[0]) * (j - v[0]) - (i - u[0]) * (v[1] - v[0])) / area;
+        const double b0 = 1.0 - b1 - b2;
+        if (b0 < 0.0 || b1 < 0.0 || b2 < 0.0)
+        {
+          continue;
+        }
+        const double height = b0 * p[0][1] + b1 * p[1][1] + b2 * p[2][1] - floor;
+        double& c = cover[static_cast<size_t>(j) * texels + i];
+        c = std::max(c, std::exp(-std::max(height, 0.0) / falloff));
+      }
+    }
+  }
+
+  // A tight shadow where the ice touches and a wide, faint one around it (the sky it hides).
+  const std::vector<double> tight = Blur(cover, texels, 0.02 * extent / texel);
+  const std::vector<double> wide = Blur(cover, texels, 0.25 * extent / texel);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(texels, texels, 1);
+  image->AllocateScalars(VTK_DOUBLE, 1);
+  double* out = static_cast<double*>(image->GetScalarPointer());
+  for (size_t k = 0; k < cover.size(); ++k)
+  {
+    out[k] = std::min(1.0, 0.55 * tight[k] + 0.45 * wide[k]);
+  }
+  return image;
+}
+
+vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo)
+{
+  double bounds[6];
+  model->GetBounds(bounds);
+  const double extent = std::max({ bounds[1] - bounds[0], bounds[5] - bounds[4], 1.0e-9 });
+  const double halfSize = 6.0 * extent;
+  const int texels = 512;
+  vtkSmartPointer<vtkImageData> shadow = ContactShadow(model, halfSize, texels);
+  const double* dark = static_cast<const double*>(shadow->GetScalarPointer());
+
+  // Transparent ice lets most light through: its shadow darkens the ground by at most this much.
+  const double strength = 0.7;
+  vtkNew<vtkImageData> rgba;
+  rgba->SetDimensions(texels, texels, 1);
+  rgba->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  unsigned char* texel = static_cast<unsigned char*>(rgba->GetScalarPointer());
+  for (int j = 0; j < texels; ++j)
+  {
+    for (int i = 0; i < texels; ++i, texel += 4)
+    {
+      // The texture's rows run with t, from +z (j = 0) to -z, as ContactShadow's do.
+      const double x = ((i + 0.5) / texels - 0.5) * 2.0;
+      const double z = ((j + 0.5) / texels - 0.5) * 2.0;
+      const double r = std::sqrt(x * x + z * z);
+      const double t = std::clamp((r - 0.35) / 0.6, 0.0, 1.0);
+      const double fade = 1.0 - t * t * (3.0 - 2.0 * t);
+      const double shade = 1.0 - strength * dark[j * texels + i];
+      texel[0] = texel[1] = texel[2] = static_cast<unsigned char>(std::lround(255.0 * shade));
+      texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade));
+    }
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(rgba);
+  texture->InterpolateOn();
+  texture->MipmapOn();
+  texture->RepeatOff();
+  texture->EdgeClampOn();
+
+  const double y = bounds[2];
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-halfSize, y, halfSize);
+  plane->SetPoint1(halfSize, y, halfSize);
+  plane->SetPoint2(-halfSize, y, -halfSize);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  auto ground = vtkSmartPointer<vtkActor>::New();
+  ground->SetMapper(mapper);
+  ground->SetTexture(texture);
+  ground->GetProperty()->LightingOff();
+  ground->GetProperty()->SetColor(albedo, albedo, albedo);
+  return ground;
+}
+}

@@ -1,0 +1,28 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
+// SPDX-License-Identifier: BSD-3-Clause
+// The ground the ice stands on in a photographed environment: a grey disc under the model with
+// its soft contact shadow, fading into the panorama at its rim.
+#ifndef IceGround_h
+#define IceGround_h
+
+#include "vtkSmartPointer.h"
+
+class vtkActor;
+class vtkImageData;
+class vtkPolyData;
+
+namespace IceGround
+{
+// How dark the ground is under `model` (its triangles, y up), standing on the plane at the
+// model's lowest y: the texels of a square of half size `halfSize` around the origin in x and
+// z, `texels` a side, 0 (open ground) to 1 (what the ice's bottom covers), softened with the
+// distance a surface lies above the plane. One component, double.
+vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize, int texels);
+
+// A ground actor at the model's lowest y: grey (`albedo`), unlit (ambient only, so lights
+// meant for the scene do not brighten it twice), darkened by ContactShadow and fading out
+// towards its rim.
+vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo);
+}
+
+#endif
