@@ -251,7 +251,7 @@ vtkSmartPointer<vtkPolyData> LoadModel(
     // displacement noise at an eighth of its default), fine enough for the rounding.
     auto cube = vtkSmartPointer<vtkIceBlockSource>::New();
     cube->SetResolution(48);
-    cube->SetRoundness(0.15);
+    cube->SetRoundness(0.22);
     cube->SetDisplacement(0.01);
     cube->SetSeed(3);
     source = cube;

@@ -212,6 +212,9 @@ std::vector<Entry> MakeEntries()
   ICE_PROPERTY_NUMBER("milky-core",
     "a cloudy core of air at the centre, its radius a fraction of the model's half size (0: none)",
     MilkyCoreRadius);
+  ICE_PROPERTY_NUMBER("bubbles",
+    "small air bubbles as specks gathered in the core, a few in vertical streams (0: none)",
+    BubbleDensity);
   ICE_PROPERTY_NUMBER("bumps", "strength of the surface bumps (0: smooth)", BumpStrength);
   ICE_PROPERTY_NUMBER("bump-scale", "size of the bumps, a fraction of the model", BumpScale);
   ICE_PROPERTY_NUMBER("roughness",

@@ -32,6 +32,15 @@ constexpr double CoreOpticalDepth = 4.0;
 constexpr double CoreColour[3] = { 0.88, 0.92, 0.95 };
 constexpr double CoreRimAir = 0.3;
 
+// The bubbles (vtkIceProperty::BubbleDensity): one may sit in each cell of a grid fixed to the ice,
+// BubbleCells cells across its extent; the core's radius where there is no core; the share of
+// the grid's columns that hold a vertical stream; how much a bubble fades per extent of ice in
+// front of it.
+constexpr double BubbleCells = 56.0;
+constexpr double BubbleCoreRadius = 0.6;
+constexpr double BubbleStreams = 0.04;
+constexpr double BubbleDepthFade = 1.2;
+
 // The density of the core's air (iceCoreDensity) that gives a ray through its centre the optical
 // depth CoreOpticalDepth * milkiness: the density's integral along that ray is sqrt(pi).
 inline double CoreDensity(double milkiness)
@@ -73,6 +82,8 @@ inline std::string Defines()
           << "#define ICE_CORE_COLOUR vec3(" << CoreColour[0] << ", " << CoreColour[1] << ", "
           << CoreColour[2] << ")\n"
           << "#define ICE_CORE_RIM_AIR " << CoreRimAir << "\n"
+          << "#define ICE_BUBBLE_STREAMS " << BubbleStreams << "\n"
+          << "#define ICE_BUBBLE_DEPTH_FADE " << BubbleDepthFade << "\n"
           << "#define ICE_CRACK_MIRROR_BUMPS " << CrackMirrorBumps << "\n"
           << "#define ICE_CRACK_EDGE_WIDTH " << CrackEdgeWidth << "\n"
           << "#define ICE_CRACK_EDGE " << CrackEdge << "\n"

@@ -366,9 +366,20 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
   if (this->Look->HasMilkyCore())
   {
     density = vtkIceInteriorLook::CoreDensity(this->Look->GetMilkiness());
-    vtkIceInteriorLook::CoreFrame(
-      this->Where.Bounds, this->Look->GetMilkyCoreRadius(), center, scale);
   }
+  // The bubbles gather in the core's frame, or in a core of their own.
+  if (this->Look->HasMilkyCore() || this->Look->GetBubbleDensity() > 0.0)
+  {
+    vtkIceInteriorLook::CoreFrame(this->Where.Bounds,
+      this->Look->GetMilkyCoreRadius() > 0.0 ? this->Look->GetMilkyCoreRadius()
+                                             : vtkIceInteriorLook::BubbleCoreRadius,
+      center, scale);
+  }
+  program->SetUniformf("iceBubbleDensity", static_cast<float>(this->Look->GetBubbleDensity()));
+  program->SetUniformf("iceBubbleCell",
+    static_cast<float>(this->Where.Extent / vtkIceInteriorLook::BubbleCells));
+  program->SetUniformf("iceBubbleFade",
+    static_cast<float>(vtkIceInteriorLook::BubbleDepthFade / this->Where.Extent));
   const float coreCenter[3] = { static_cast<float>(center[0]), static_cast<float>(center[1]),
     static_cast<float>(center[2]) };
   const float coreScale[3] = { static_cast<float>(scale[0]), static_cast<float>(scale[1]),

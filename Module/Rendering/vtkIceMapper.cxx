@@ -168,7 +168,8 @@ bool vtkIceMapper::HasInterior() const
   }
   return view == DebugOff &&
     (this->IceProperty->GetNumberOfCracks() > 0 || this->IceProperty->GetNumberOfAirPlanes() > 0 ||
-      (this->IceProperty->HasMilkyCore() && this->InteriorMethod != InteriorPaperPasses));
+      ((this->IceProperty->HasMilkyCore() || this->IceProperty->GetBubbleDensity() > 0.0) &&
+        this->InteriorMethod != InteriorPaperPasses));
 }
 
 //------------------------------------------------------------------------------

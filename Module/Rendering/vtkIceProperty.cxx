@@ -82,6 +82,7 @@ vtkIceClampedSetter(CrackIntensity)
 vtkIceClampedSetter(CrackReflection)
 vtkIceClampedSetter(Milkiness)
 vtkIceClampedSetter(MilkyCoreRadius)
+vtkIceClampedSetter(BubbleDensity)
 vtkIceClampedSetter(BumpStrength)
 vtkIceClampedSetter(BumpScale)
 vtkIceClampedSetter(GlisteningScale)
@@ -188,6 +189,7 @@ void vtkIceProperty::DeepCopy(vtkIceProperty* other)
   this->AirSeed = other->AirSeed;
   this->Milkiness = other->Milkiness;
   this->MilkyCoreRadius = other->MilkyCoreRadius;
+  this->BubbleDensity = other->BubbleDensity;
   this->BumpStrength = other->BumpStrength;
   this->BumpScale = other->BumpScale;
   this->NormalMap = other->NormalMap;
@@ -245,6 +247,7 @@ void vtkIceProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AirSeed: " << this->AirSeed << "\n";
   os << indent << "Milkiness: " << this->Milkiness << "\n";
   os << indent << "MilkyCoreRadius: " << this->MilkyCoreRadius << "\n";
+  os << indent << "BubbleDensity: " << this->BubbleDensity << "\n";
   os << indent << "BumpStrength: " << this->BumpStrength << "\n";
   os << indent << "BumpScale: " << this->BumpScale << "\n";
   os << indent << "NormalMap: " << this->NormalMap.Get() << "\n";

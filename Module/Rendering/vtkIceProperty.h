@@ -248,6 +248,21 @@ public:
 
   ///@{
   /**
+   * Small air bubbles frozen into the ice, drawn one by one as white specks of mixed sizes (small
+   * ones most), a few in vertical streams, fading with their depth in the ice: 0 (the default)
+   * none, 1 a dense cloud. They gather where the milky core is (its centre and radius; without a
+   * core, in the middle 0.6 of the ice's half size) and thin out gradually beyond it, so they
+   * give the core its grain. Clamped to [0, 1]. Drawn by the mapper's screen-space interior with
+   * vtkIcePass.
+   */
+  virtual void SetBubbleDensity(double density);
+  virtual double GetBubbleDensityMinValue() { return 0.0; }
+  virtual double GetBubbleDensityMaxValue() { return 1.0; }
+  vtkGetMacro(BubbleDensity, double);
+  ///@}
+
+  ///@{
+  /**
    * A bumpy surface: how far the normal tilts (0 = smooth, the paper's clean optics) and the size
    * of a bump as a fraction of the ice's largest extent. The bumps are fixed to the model, so they
    * do not swim when the camera moves, and they drive reflection, refraction and Fresnel.
@@ -366,6 +381,7 @@ protected:
   int AirSeed = 1;
   double Milkiness = 0.5;
   double MilkyCoreRadius = 0.0;
+  double BubbleDensity = 0.0;
   double BumpStrength = 0.08;
   double BumpScale = 0.15;
   vtkSmartPointer<vtkTexture> NormalMap;

@@ -21,6 +21,14 @@ uniform int iceInteriorDebug;        // ICE_DEBUG_CRACKS, ICE_DEBUG_AIR or 0
 uniform vec3 iceCoreCenter;          // the milky core, model coordinates
 uniform vec3 iceCoreScale;           // model to the core's frame (its radius 1), per axis
 uniform float iceCoreDensity;        // 0: no core
+uniform float iceBubbleDensity;      // 0: no bubbles
+uniform float iceBubbleCell;         // the bubbles' grid cell, model units
+uniform float iceBubbleFade;         // how much a bubble fades per model unit of ice in front
+
+// The pixel's width at view depth z is icePixelFootprint.x + z * icePixelFootprint.y (world
+// units): the screen-space step sets it, so that a bubble smaller than a pixel covers its share
+// of the pixel instead of flickering.
+vec2 icePixelFootprint = vec2(0.0);
 
 const int iceOutlineSamples = 64; // per crack model, over the full turn
 const int iceRecordsPerRow = 16;
@@ -74,6 +82,34 @@ float iceCrackOutline(int model, float angle)
   return mix(r0, r1, fract(x));
 }
 
+// One well-mixed 32-bit integer of another (Chris Wellons' lowbias32 constants).
+uint iceMix(uint x)
+{
+  x ^= x >> 16u;
+  x *= 0x7feb352du;
+  x ^= x >> 15u;
+  x *= 0x846ca68bu;
+  x ^= x >> 16u;
+  return x;
+}
+
+// Three independent numbers in [0, 1) for a grid cell, the same on every GPU.
+vec3 iceCellRandom(ivec3 c)
+{
+  uint h = iceMix(uint(c.x) + iceMix(uint(c.y) + iceMix(uint(c.z))));
+  uint a = iceMix(h ^ 0x9e3779b9u);
+  uint b = iceMix(a ^ 0x85ebca6bu);
+  return vec3(uvec3(h, a, b) >> 8u) * (1.0 / 16777216.0);
+}
+
+// Where the bubbles gather, u in the core's frame: 1 at its centre, thinning gradually outwards
+// along a rounded cube (ice freezes from its faces inwards, pushing the air to the middle).
+float iceBubbleProfile(vec3 u)
+{
+  vec3 a = u * u;
+  return exp(-dot(a, a));
+}
+
 //ICE::Functions
 // The interior as what it does to the ice colour c behind it: c * keep + add, kept as
 // vec4(add, keep), since every layer mixes c towards its own colour by a scalar or adds light.
@@ -102,6 +138,71 @@ vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
   vec3 light = vec3(0.0);
   //ICEHOOK::InteriorLights
   return light;
+}
+
+// The bubbles along the ray o + s d (model coordinates, s in world units up to sBack), front to
+// back through the cells of their grid (one bubble at most in a cell, fully inside it), as
+// vec4(add, keep) with the nearest first. A bubble scatters white light, brightest at its rim;
+// the ice and the core's cloud in front of it fade it. Rays through a column that holds a stream
+// meet bubbles lined up vertically.
+vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection,
+  float viewDepth, float along)
+{
+  vec4 layer = vec4(0.0, 0.0, 0.0, 1.0);
+  if (iceBubbleDensity <= 0.0 || iceInteriorDebug != 0)
+  {
+    return layer;
+  }
+  float modelPerWorld = length(d);
+  vec3 p = o / iceBubbleCell; // in cells
+  vec3 v = d / iceBubbleCell;
+  vec3 cell = floor(p); // the cell's integer coordinates, as floats
+  vec3 direction = sign(v);
+  vec3 delta = 1.0 / max(abs(v), vec3(1.0e-9));
+  // A selection (mix by a bvec3): mix by a float would compute 1e30 + (x - 1e30) * 1 = 0.
+  vec3 next = mix(vec3(1.0e30), (direction * (cell - p) + max(direction, 0.0)) * delta,
+    notEqual(direction, vec3(0.0)));
+  float sCell = 0.0;
+  for (int i = 0; i < 160 && sCell < sBack && layer.a > 0.02; ++i)
+  {
+    ivec3 c = ivec3(cell);
+    vec3 column = iceCellRandom(ivec3(c.x, -7919, c.z));
+    vec3 r = iceCellRandom(c);
+    vec3 more = iceCellRandom(c + ivec3(40503, 0, 0));
+    // Streams: small bubbles on the column's axis; elsewhere mostly tiny, a few large.
+    bool stream = column.x < ICE_BUBBLE_STREAMS;
+    float radius = stream ? mix(0.08, 0.2, more.y) : mix(0.04, 0.3, pow(more.y, 2.5));
+    // Anywhere in the cell that keeps the bubble inside it: no grid shows.
+    vec3 place = vec3(c) + radius + (1.0 - 2.0 * radius) * r;
+    if (stream)
+    {
+      place.xz = vec2(c.xz) + 0.45 + 0.1 * column.yz;
+    }
+    float profile = iceBubbleProfile((place * iceBubbleCell - iceCoreCenter) * iceCoreScale);
+    float chance = iceBubbleDensity * (stream ? min(1.0, 3.0 * sqrt(profile)) : profile);
+    if (more.x < chance)
+    {
+      vec3 w = place - p;
+      float sClosest = dot(w, v) / dot(v, v);
+      float miss = length(w - sClosest * v);
+      float pixel = 0.5 * max(icePixelFootprint.x + icePixelFootprint.y *
+          (viewDepth + sClosest * along), 1.0e-6) * modelPerWorld / iceBubbleCell;
+      float cover = clamp((radius + pixel - miss) / (2.0 * pixel), 0.0, 1.0) *
+        min(1.0, radius * radius / (pixel * pixel));
+      float rim = mix(0.3, 0.8, smoothstep(0.3, 1.0, miss / radius));
+      float seen = exp(-iceBubbleFade * sClosest * modelPerWorld -
+        iceCoreOpticalDepth(coreOrigin, coreDirection, max(sClosest, 0.0), iceCoreDensity));
+      float a = sClosest > 0.0 && sClosest < sBack ? cover * rim * seen : 0.0;
+      layer.rgb += layer.a * a * ICE_CORE_COLOUR;
+      layer.a *= 1.0 - a;
+    }
+    float sNext = min(next.x, min(next.y, next.z));
+    vec3 crossed = vec3(lessThanEqual(next, vec3(sNext)));
+    cell += crossed * direction;
+    next += crossed * delta;
+    sCell = sNext;
+  }
+  return layer;
 }
 
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
@@ -149,6 +250,10 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float b
     }
     iceInteriorOver(t, layer.rgb, hit ? layer.a : 0.0);
   }
+
+  // The bubbles in front of the core's cloud and the air planes they lie in.
+  vec4 bubbles = iceBubbles(o, d, sBack, coreOrigin, coreDirection, viewDepth, along);
+  t = vec4(bubbles.rgb + bubbles.a * t.rgb, bubbles.a * t.a);
 
   // Cracks: a crack the ray misses (no crossing in the ice, or outside the outline) is skipped.
   // A GPU skips what no fragment of a warp needs (an NVIDIA H200: 128 cracks 28 -> 19 ms a frame

@@ -60,6 +60,15 @@ uniform sampler2D iceNearestFront;
   float depthA = dot(a - iceCameraWC, iceViewDirectionWC);
   float depthB = dot(b - iceCameraWC, iceViewDirectionWC);
   vec3 positionWC = mix(a, b, (front - depthA) / (depthB - depthA));
+  // The width of a pixel at depthA and depthB, from the next pixel's ray: linear in the depth.
+  vec4 nearNext = iceDCWCMatrix * vec4(ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x),
+    ndc.y, -1.0, 1.0);
+  vec4 farNext = iceDCWCMatrix * vec4(ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x),
+    ndc.y, 1.0, 1.0);
+  float widthA = length(nearNext.xyz / nearNext.w - a);
+  float widthB = length(farNext.xyz / farNext.w - b);
+  float widthSlope = (widthB - widthA) / (depthB - depthA);
+  icePixelFootprint = vec2(widthA - depthA * widthSlope, widthSlope);
   vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
   gl_FragData[0] = iceInteriorAlong(
     positionWC, positionMC, front, texelFetch(iceBackNormals, texel, 0).a);

@@ -201,6 +201,7 @@ vtkIceLookMacro(NumberOfAirPlanes, int, v);
 vtkIceLookMacro(AirSeed, int, v);
 vtkIceLookMacro(Milkiness, double, v);
 vtkIceLookMacro(MilkyCoreRadius, double, v);
+vtkIceLookMacro(BubbleDensity, double, v);
 // "Roughness" is ParaView's physically based lighting's (vtkGeometryRepresentation::SetRoughness).
 void vtkIceRepresentation::SetIceRoughness(double v)
 {

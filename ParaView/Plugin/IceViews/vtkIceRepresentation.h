@@ -78,6 +78,7 @@ public:
   void SetAirSeed(int value);
   void SetMilkiness(double value);
   void SetMilkyCoreRadius(double value);
+  void SetBubbleDensity(double value);
   void SetIceRoughness(double value); // the ice mapper's Roughness (frost)
   void SetCrackReflection(double value);
   void SetBumpStrength(double value);
