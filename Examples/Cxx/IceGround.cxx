@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 #include "IceGround.h"
+#include "vtkIceNoise.h"
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
@@ -138,16 +139,28 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
     }
   }
 
-  // A tight shadow where the ice touches and a wide, faint one around it (the sky it hides).
+  // A tight shadow where the ice touches and a wide, faint one around it (the sky it hides);
+  // in the second component the wet ground the melting ice leaves around its foot, with an
+  // uneven edge.
   const std::vector<double> tight = Blur(cover, texels, 0.02 * extent / texel);
   const std::vector<double> wide = Blur(cover, texels, 0.25 * extent / texel);
+  const std::vector<double> near = Blur(cover, texels, 0.06 * extent / texel);
   vtkNew<vtkImageData> image;
   image->SetDimensions(texels, texels, 1);
-  image->AllocateScalars(VTK_DOUBLE, 1);
+  image->AllocateScalars(VTK_DOUBLE, 2);
   double* out = static_cast<double*>(image->GetScalarPointer());
-  for (size_t k = 0; k < cover.size(); ++k)
+  for (int j = 0; j < texels; ++j)
   {
-    out[k] = std::min(1.0, 0.55 * tight[k] + 0.45 * wide[k]);
+    for (int i = 0; i < texels; ++i)
+    {
+      const size_t k = static_cast<size_t>(j) * texels + i;
+      const double at[3] = { 6.0 * ((i + 0.5) * texel - halfSize) / extent, 0.0,
+        6.0 * (halfSize - (j + 0.5) * texel) / extent };
+      const double edge = near[k] + 0.12 * vtkIceNoise::FractalNoise(at, 7);
+      out[2 * k] = std::min(1.0, 0.55 * tight[k] + 0.45 * wide[k]);
+      // Only near the foot: no wet spots of noise alone far from the ice.
+      out[2 * k + 1] = std::clamp((edge - 0.04) / 0.1, 0.0, 1.0) * std::min(1.0, 40.0 * near[k]);
+    }
   }
   return image;
 }
@@ -178,7 +191,9 @@ vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo)
       const double r = std::sqrt(x * x + z * z);
       const double t = std::clamp((r - 0.35) / 0.6, 0.0, 1.0);
       const double fade = 1.0 - t * t * (3.0 - 2.0 * t);
-      const double shade = 1.0 - strength * dark[j * texels + i];
+      // Wet ground is darker: it reflects more of its light away, scatters less back.
+      const double shade =
+        (1.0 - strength * dark[2 * (j * texels + i)]) * (1.0 - 0.3 * dark[2 * (j * texels + i) + 1]);
       texel[0] = texel[1] = texel[2] = static_cast<unsigned char>(std::lround(255.0 * shade));
       texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade));
     }

@@ -38,7 +38,7 @@ constexpr double CoreRimAir = 0.3;
 // front of it.
 constexpr double BubbleCells = 56.0;
 constexpr double BubbleCoreRadius = 0.6;
-constexpr double BubbleStreams = 0.04;
+constexpr double BubbleStreams = 0.015;
 constexpr double BubbleDepthFade = 1.2;
 
 // The density of the core's air (iceCoreDensity) that gives a ray through its centre the optical

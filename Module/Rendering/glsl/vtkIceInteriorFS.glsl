@@ -169,22 +169,36 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
     vec3 column = iceCellRandom(ivec3(c.x, -7919, c.z));
     vec3 r = iceCellRandom(c);
     vec3 more = iceCellRandom(c + ivec3(40503, 0, 0));
-    // Streams: small bubbles on the column's axis; elsewhere mostly tiny, a few large.
+    // Streams: small bubbles on the column's axis, drawn out upwards; elsewhere mostly tiny, a
+    // few large, some drawn out too (the water froze upwards around them).
     bool stream = column.x < ICE_BUBBLE_STREAMS;
-    float radius = stream ? mix(0.08, 0.2, more.y) : mix(0.04, 0.3, pow(more.y, 2.5));
+    float radius = stream ? mix(0.06, 0.14, more.y) : mix(0.04, 0.3, pow(more.y, 2.5));
+    float stretch = min(stream ? 2.0 : 1.0 + 1.5 * max(more.z - 0.6, 0.0) / 0.4, 0.45 / radius);
     // Anywhere in the cell that keeps the bubble inside it: no grid shows.
-    vec3 place = vec3(c) + radius + (1.0 - 2.0 * radius) * r;
+    vec3 extent = vec3(radius, radius * stretch, radius);
+    vec3 place = vec3(c) + extent + (1.0 - 2.0 * extent) * r;
     if (stream)
     {
       place.xz = vec2(c.xz) + 0.45 + 0.1 * column.yz;
     }
-    float profile = iceBubbleProfile((place * iceBubbleCell - iceCoreCenter) * iceCoreScale);
-    float chance = iceBubbleDensity * (stream ? min(1.0, 3.0 * sqrt(profile)) : profile);
+    vec3 u = (place * iceBubbleCell - iceCoreCenter) * iceCoreScale;
+    float profile = iceBubbleProfile(u);
+    float chance = iceBubbleDensity * (stream ? min(0.7, 2.0 * sqrt(profile)) : profile);
+    if (!stream && more.x < 1.6 * chance)
+    {
+      // Feathers: the cloud's density varies with the direction from its centre, so it runs in
+      // streaks towards the centre, as the freezing fronts left it.
+      float n = textureLod(iceInteriorBump, normalize(u + 1.0e-6) * 0.6, 0.0).x;
+      chance *= mix(0.3, 1.6, smoothstep(-0.25, 0.25, n));
+    }
     if (more.x < chance)
     {
-      vec3 w = place - p;
-      float sClosest = dot(w, v) / dot(v, v);
-      float miss = length(w - sClosest * v);
+      // The ray in the bubble's frame, where it is a ball of radius `radius`.
+      vec3 squash = vec3(1.0, 1.0 / stretch, 1.0);
+      vec3 w = (place - p) * squash;
+      vec3 vb = v * squash;
+      float sClosest = dot(w, vb) / dot(vb, vb);
+      float miss = length(w - sClosest * vb);
       float pixel = 0.5 * max(icePixelFootprint.x + icePixelFootprint.y *
           (viewDepth + sClosest * along), 1.0e-6) * modelPerWorld / iceBubbleCell;
       float cover = clamp((radius + pixel - miss) / (2.0 * pixel), 0.0, 1.0) *
