@@ -51,7 +51,7 @@ class Messages:
 
 
 CLAMPED = ["IndexOfRefraction", "RefractionRatio", "AttenuationDistance", "FresnelPower", "BackNormalWeight", "CrackIntensity", "Milkiness",
-           "MilkyCoreRadius",
+           "MilkyCoreRadius", "BubbleDensity",
            "BumpStrength", "BumpScale", "GlisteningScale", "GlisteningIntensity",
            "GlisteningAlignmentGain", "SnowAmount"]
 INTEGERS = {"NumberOfCracks": (0, 1000), "NumberOfAirPlanes": (0, 1000)}
