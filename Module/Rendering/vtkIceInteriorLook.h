@@ -83,7 +83,6 @@ inline std::string Defines()
           << CoreColour[2] << ")\n"
           << "#define ICE_CORE_RIM_AIR " << CoreRimAir << "\n"
           << "#define ICE_BUBBLE_STREAMS " << BubbleStreams << "\n"
-          << "#define ICE_BUBBLE_DEPTH_FADE " << BubbleDepthFade << "\n"
           << "#define ICE_CRACK_MIRROR_BUMPS " << CrackMirrorBumps << "\n"
           << "#define ICE_CRACK_EDGE_WIDTH " << CrackEdgeWidth << "\n"
           << "#define ICE_CRACK_EDGE " << CrackEdge << "\n"

@@ -328,6 +328,14 @@ void vtkIceMapper::WarnSettingsWithoutEffect(bool withPass)
                        "the milky core. Set InteriorMethod to InteriorScreenSpace to see it.");
     this->WarnedCoreWithPaperPasses = true;
   }
+  if (this->IceProperty->GetBubbleDensity() > 0.0 && this->InteriorMethod == InteriorPaperPasses &&
+    !this->WarnedBubblesWithPaperPasses)
+  {
+    vtkWarningMacro(<< "BubbleDensity " << this->IceProperty->GetBubbleDensity()
+                    << " shows nothing with InteriorPaperPasses: the screen-space interior draws "
+                       "the bubbles. Set InteriorMethod to InteriorScreenSpace to see them.");
+    this->WarnedBubblesWithPaperPasses = true;
+  }
   if (this->MaxBounces > 1 && this->TwoSidedMethod != TwoSidedExitPoint &&
     !this->WarnedBouncesWithoutExitPoint)
   {

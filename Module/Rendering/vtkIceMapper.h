@@ -375,6 +375,7 @@ protected:
   bool WarnedSnowWithoutGlistening = false;
   bool WarnedAbsorptionWithoutPass = false;
   bool WarnedCoreWithPaperPasses = false;
+  bool WarnedBubblesWithPaperPasses = false;
   bool WarnedBouncesWithoutExitPoint = false;
   // How the input encloses a volume (vtkIceSurfaceCheck::CheckClosure), found when Geometry
   // clipping or culling first needs it: its open edges, whether it is closed and faces outward.

@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
 """A setting that cannot show says so, once: snow needs Glistening, absorption needs vtkIcePass
-(the back faces give the path in the ice), the milky core the screen-space interior. Where it
+(the back faces give the path in the ice), the milky core and the bubbles the screen-space
+interior. Where it
 shows, nothing is said."""
 import sys
 
@@ -61,6 +62,15 @@ def core_in_screen_space(mapper):
     mapper.GetIceProperty().SetMilkyCoreRadius(0.5)
 
 
+def bubbles_in_paper_passes(mapper):
+    mapper.GetIceProperty().SetBubbleDensity(0.5)
+    mapper.SetInteriorMethod(vtkice.vtkIceMapper.InteriorPaperPasses)
+
+
+def bubbles_in_screen_space(mapper):
+    mapper.GetIceProperty().SetBubbleDensity(0.5)
+
+
 def bounces_with_blended_normals(mapper):
     mapper.SetMaxBounces(4)
 
@@ -97,6 +107,17 @@ def test_core_with_paper_passes_warns_once():
 
 def test_core_in_screen_space_says_nothing():
     text = warnings_of_one_render(core_in_screen_space, with_pass=True)
+    check("nothing" not in text, text)
+
+
+def test_bubbles_with_paper_passes_warn_once():
+    text = warnings_of_one_render(bubbles_in_paper_passes, with_pass=True)
+    check(text.count("shows nothing") == 1 and "BubbleDensity" in text and
+          "InteriorScreenSpace" in text, text)
+
+
+def test_bubbles_in_screen_space_say_nothing():
+    text = warnings_of_one_render(bubbles_in_screen_space, with_pass=True)
     check("nothing" not in text, text)
 
 
