@@ -212,7 +212,9 @@ bool vtkIceTriangleBVH::Build(vtkPolyData* surface, vtkDataArray* normals)
   this->Nodes.reserve(static_cast<size_t>(16 * (triangles / LeafSize + 1)));
   this->Triangles.reserve(static_cast<size_t>(24 * triangles));
   // The root is always a node: a surface of LeafSize triangles or fewer gets an empty second
-  // child (count 0, an inverted box no ray enters).
+  // child, a leaf of no triangle (count -0.5: negative marks a leaf, and it truncates to 0). Not
+  // a node: the slab test takes any box's corners in either order, so a ray enters even an
+  // "inverted" box, and a node child there pointed back at the root (the traversal never ended).
   if (triangles > LeafSize)
   {
     builder.Split(0, static_cast<int>(triangles), 1);
@@ -222,8 +224,10 @@ bool vtkIceTriangleBVH::Build(vtkPolyData* surface, vtkDataArray* normals)
     const Builder::Child leaf = builder.Make(0, static_cast<int>(triangles), 1);
     this->Nodes = { static_cast<float>(leaf.Low[0]), static_cast<float>(leaf.Low[1]),
       static_cast<float>(leaf.Low[2]), leaf.Index, static_cast<float>(leaf.High[0]),
-      static_cast<float>(leaf.High[1]), static_cast<float>(leaf.High[2]), leaf.Count, 1.0f, 1.0f,
-      1.0f, 0.0f, -1.0f, -1.0f, -1.0f, 0.0f };
+      static_cast<float>(leaf.High[1]), static_cast<float>(leaf.High[2]), leaf.Count,
+      static_cast<float>(leaf.Low[0]), static_cast<float>(leaf.Low[1]),
+      static_cast<float>(leaf.Low[2]), 0.0f, static_cast<float>(leaf.High[0]),
+      static_cast<float>(leaf.High[1]), static_cast<float>(leaf.High[2]), -0.5f };
   }
   this->Depth = builder.Depth;
   Vec low;

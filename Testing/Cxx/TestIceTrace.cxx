@@ -11,6 +11,8 @@
 //   torus      a torus (non-convex: rays leave it and are not followed back in), 6 bounces
 //   absorbing  the cube with absorption along the whole path, 3 bounces
 //   bounces    MaxBounces 2 differs from 1 inside a cube, and 1 is the exit point's picture
+//   tetrahedron  four triangles, one leaf under the root (its second child empty), 6 bounces: the
+//              empty child was a node pointing back at the root, and the traversal never ended
 #include "IceTestResources.h"
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
@@ -27,6 +29,7 @@
 #include "vtkNew.h"
 #include "vtkParametricFunctionSource.h"
 #include "vtkParametricTorus.h"
+#include "vtkPlatonicSolidSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
@@ -58,6 +61,24 @@ vtkSmartPointer<vtkPolyData> Cube()
   triangles->SetInputConnection(cube->GetOutputPort());
   triangles->Update();
   return triangles->GetOutput();
+}
+
+// Four flat faces, each its own normal: fewer triangles than a leaf holds.
+vtkSmartPointer<vtkPolyData> Tetrahedron()
+{
+  vtkNew<vtkPlatonicSolidSource> solid;
+  solid->SetSolidTypeToTetrahedron();
+  vtkNew<vtkTransform> scale; // as large on the screen as the cube
+  scale->Scale(1.5, 1.5, 1.5);
+  vtkNew<vtkTransformFilter> scaled;
+  scaled->SetInputConnection(solid->GetOutputPort());
+  scaled->SetTransform(scale);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(scaled->GetOutputPort());
+  normals->SplittingOn();
+  normals->SetFeatureAngle(30.0);
+  normals->Update();
+  return normals->GetOutput();
 }
 
 vtkSmartPointer<vtkPolyData> Torus()
@@ -279,5 +300,7 @@ int TestIceTrace(int argc, char* argv[])
       { "torus", [&] { return AgainstReference("torus", Torus(), above, 6, false, false); } },
       { "absorbing",
         [&] { return AgainstReference("absorbing cube", Cube(), corner, 3, false, true); } },
-      { "bounces", Bounces } });
+      { "bounces", Bounces },
+      { "tetrahedron",
+        [&] { return AgainstReference("tetrahedron", Tetrahedron(), corner, 6, false, false); } } });
 }
