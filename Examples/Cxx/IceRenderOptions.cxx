@@ -247,8 +247,7 @@ bool WantsToneMapping(const std::string& environment, const vtkIceLookTable::Ass
       return false;
     }
   }
-  const std::vector<std::string>& names = IceScene::Panoramas();
-  if (std::find(names.begin(), names.end(), environment) != names.end())
+  if (IceScene::IsPanorama(environment))
   {
     return true;
   }

@@ -320,6 +320,12 @@ const std::vector<std::string>& Panoramas()
   return names;
 }
 
+bool IsPanorama(const std::string& name)
+{
+  const std::vector<std::string>& names = Panoramas();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 std::string PanoramaFolder()
 {
   return "/usr/share/blender/datafiles/studiolights/world";
@@ -327,8 +333,7 @@ std::string PanoramaFolder()
 
 vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std::string& error)
 {
-  const std::vector<std::string>& panoramas = Panoramas();
-  if (std::find(panoramas.begin(), panoramas.end(), environment) != panoramas.end())
+  if (IsPanorama(environment))
   {
     // A name, not a path: ./courtyard names a file of that name.
     const std::string path = PanoramaFolder() + "/" + environment + ".exr";

@@ -34,6 +34,7 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
 // The photographed HDR panoramas (CC0, 1024 x 512 EXR) that Debian's blender-data package puts in
 // PanoramaFolder(): city, courtyard, forest, interior, night, studio, sunrise, sunset.
 const std::vector<std::string>& Panoramas();
+bool IsPanorama(const std::string& name);
 std::string PanoramaFolder();
 
 // Adds the landscape of the default scene: a checkered ground at `groundHeight`, five rocks and

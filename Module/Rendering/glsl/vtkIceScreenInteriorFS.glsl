@@ -61,10 +61,9 @@ uniform sampler2D iceNearestFront;
   float depthB = dot(b - iceCameraWC, iceViewDirectionWC);
   vec3 positionWC = mix(a, b, (front - depthA) / (depthB - depthA));
   // The width of a pixel at depthA and depthB, from the next pixel's ray: linear in the depth.
-  vec4 nearNext = iceDCWCMatrix * vec4(ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x),
-    ndc.y, -1.0, 1.0);
-  vec4 farNext = iceDCWCMatrix * vec4(ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x),
-    ndc.y, 1.0, 1.0);
+  float nextX = ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x);
+  vec4 nearNext = iceDCWCMatrix * vec4(nextX, ndc.y, -1.0, 1.0);
+  vec4 farNext = iceDCWCMatrix * vec4(nextX, ndc.y, 1.0, 1.0);
   float widthA = length(nearNext.xyz / nearNext.w - a);
   float widthB = length(farNext.xyz / farNext.w - b);
   float widthSlope = (widthB - widthA) / (depthB - depthA);
