@@ -589,8 +589,7 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
     return;
   }
   vtkTextureObject* active[2];
-  this->Trace->Activate(
-    static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act, this->IceProperty,
+  this->Trace->Activate(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act,
     this->MaxBounces, active);
   for (vtkTextureObject* texture : active)
   {

@@ -31,4 +31,9 @@ void vtkIcePropertyUniforms::Set(vtkIceProperty* property, vtkShaderProgram* pro
     program->SetUniformf("iceRoughnessLevel",
       static_cast<float>(vtkIcePrefilteredEnvironment::LevelOf(property->GetRoughness())));
   }
+  if (program->IsUniformUsed("iceRoughnessAlpha"))
+  {
+    const double roughness = property->GetRoughness();
+    program->SetUniformf("iceRoughnessAlpha", static_cast<float>(roughness * roughness));
+  }
 }

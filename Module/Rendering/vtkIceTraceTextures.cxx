@@ -3,8 +3,6 @@
 #include "vtkIceTraceTextures.h"
 
 #include "vtkActor.h"
-#include "vtkIcePrefilteredEnvironment.h"
-#include "vtkIceProperty.h"
 #include "vtkIceTriangleBVH.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -15,7 +13,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
-#include <cmath>
 
 //------------------------------------------------------------------------------
 vtkIceTraceTextures::vtkIceTraceTextures()
@@ -41,7 +38,7 @@ bool vtkIceTraceTextures::Update(vtkPolyData* surface, const char* normals)
 
 //------------------------------------------------------------------------------
 void vtkIceTraceTextures::Activate(vtkOpenGLRenderWindow* window, vtkShaderProgram* program,
-  vtkActor* actor, vtkIceProperty* property, int maxBounces, vtkTextureObject* active[2])
+  vtkActor* actor, int maxBounces, vtkTextureObject* active[2])
 {
   if (!this->Nodes || this->Nodes->GetContext() != window)
   {
@@ -83,16 +80,6 @@ void vtkIceTraceTextures::Activate(vtkOpenGLRenderWindow* window, vtkShaderProgr
   }
   wcmc->Transpose();
   program->SetUniformMatrix("iceTraceWCMC", wcmc);
-  if (program->IsUniformUsed("iceTransmissionRoughnessLevel"))
-  {
-    // The lobe through both interfaces against the reflected one (vtkIceTraceFS.glsl):
-    // hypot(1 - 1/n, n - 1) / 2, 0.195 for ice; alpha = roughness^2 scales with it.
-    const double n = property->GetIndexOfRefraction();
-    const double lobe = std::hypot(1.0 - 1.0 / n, n - 1.0) / 2.0;
-    program->SetUniformf("iceTransmissionRoughnessLevel",
-      static_cast<float>(
-        vtkIcePrefilteredEnvironment::LevelOf(property->GetRoughness() * std::sqrt(lobe))));
-  }
 }
 
 //------------------------------------------------------------------------------

@@ -12,7 +12,6 @@
 #include "vtkType.h" // for vtkMTimeType
 
 class vtkActor;
-class vtkIceProperty;
 class vtkIceTriangleBVH;
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
@@ -32,10 +31,10 @@ public:
   // or more than vtkIceTriangleBVH::MaximumTriangles).
   bool Update(vtkPolyData* surface, const char* normals);
   // Uploads what changed, activates both textures and sets the trace's uniforms for a draw of
-  // `actor` of `property` with up to `maxBounces` hits; `active` receives the two textures to
-  // deactivate after the draw.
+  // `actor` with up to `maxBounces` hits; `active` receives the two textures to deactivate after
+  // the draw.
   void Activate(vtkOpenGLRenderWindow* window, vtkShaderProgram* program, vtkActor* actor,
-    vtkIceProperty* property, int maxBounces, vtkTextureObject* active[2]);
+    int maxBounces, vtkTextureObject* active[2]);
   void ReleaseGraphicsResources(vtkWindow* window);
 
   vtkIceTriangleBVH* GetTree() const { return this->Tree; }

@@ -57,6 +57,67 @@ float iceDielectricReflectance(float cosIncidence, float eta)
   return 0.5 * (rs * rs + rp * rp);
 }
 
+// How far a ray refracted through a rough interface turns per angle of tilt of its microfacet:
+// Snell's law gives d(theta_t)/d(theta_i) = eta cos(theta_i) / cos(theta_t), and the facet's tilt
+// turns the normal too, so the ray turns by |1 - eta cos(theta_i) / cos(theta_t)| of the tilt
+// (a mirror turns it by 2). Head-on air to ice 1 - 1/n; near grazing entry or the critical angle
+// leaving, the refracted lobe widens without bound. cosIncidence and cosTransmitted are the
+// cosines of the ray before and after against the normal (of opposite signs where it could not
+// refract and was mirrored); eta = n_from / n_to.
+float iceRefractionSpread(float cosIncidence, float cosTransmitted, float eta)
+{
+  if (cosIncidence * cosTransmitted < 0.0)
+  {
+    return 2.0;
+  }
+  return abs(1.0 - eta * abs(cosIncidence) / max(abs(cosTransmitted), 1.0e-3));
+}
+
+// Smith's masking of GGX (alpha = roughness^2): the share of a rough surface's microfacets seen
+// from a direction at cos(angle) = cosine to its normal.
+float iceMasking(float cosine, float alpha)
+{
+  float c2 = max(cosine * cosine, 1.0e-8);
+  return 2.0 / (1.0 + sqrt(1.0 + alpha * alpha * (1.0 - c2) / c2));
+}
+
+// What a rough interface (GGX, alpha = roughness^2) reflects and transmits of light arriving at
+// cos(angle) = cosIncidence to its normal, eta = n_from / n_to: Fresnel's equations at each
+// microfacet the light sees, the light leaving masked by the others (single scattering). An
+// average over eight fixed samples of the microfacets seen (Heitz 2018's visible normals, the
+// same pairs in every pixel): a smooth interface's Fresnel at the geometric normal mirrors more
+// near grazing, where the facets seen tilt towards the light.
+vec2 iceRoughInterface(float cosIncidence, float eta, float alpha)
+{
+  float c = clamp(abs(cosIncidence), 1.0e-4, 1.0);
+  // The surface's frame: normal +z, the light towards +x.
+  vec3 v = vec3(sqrt(1.0 - c * c), 0.0, c);
+  vec3 stretched = normalize(vec3(alpha * v.x, 0.0, v.z));
+  vec3 t2Axis = vec3(-stretched.z, 0.0, stretched.x);
+  float s = 0.5 * (1.0 + stretched.z);
+  vec2 reflectedTransmitted = vec2(0.0);
+  for (int i = 0; i < 8; ++i)
+  {
+    float u1 = (float(i) + 0.5) / 8.0;
+    float u2 = (float((3 * i) % 8) + 0.5) / 8.0;
+    float radius = sqrt(u1);
+    float t1 = radius * cos(6.2831853 * u2);
+    float t2 = mix(sqrt(1.0 - t1 * t1), radius * sin(6.2831853 * u2), s);
+    vec3 h = t1 * vec3(0.0, 1.0, 0.0) + t2 * t2Axis +
+      sqrt(max(0.0, 1.0 - t1 * t1 - t2 * t2)) * stretched;
+    vec3 m = normalize(vec3(alpha * h.xy, max(h.z, 0.0)));
+    float vm = dot(v, m);
+    float f = iceDielectricReflectance(vm, eta);
+    float reflectedZ = 2.0 * vm * m.z - v.z;
+    reflectedTransmitted.x += reflectedZ > 0.0 ? f * iceMasking(reflectedZ, alpha) : 0.0;
+    float sinT2 = eta * eta * (1.0 - vm * vm);
+    float transmittedZ = -eta * v.z + (eta * vm - sqrt(max(0.0, 1.0 - sinT2))) * m.z;
+    reflectedTransmitted.y +=
+      sinT2 < 1.0 && transmittedZ < 0.0 ? (1.0 - f) * iceMasking(transmittedZ, alpha) : 0.0;
+  }
+  return reflectedTransmitted / 8.0;
+}
+
 // A crack is a thin gap of air in the ice: light in the ice meeting it is reflected by Fresnel's
 // equations at the ice-to-air face of index ratio ior (all of it beyond the critical angle), and
 // the gap's two parallel faces together reflect 2R / (1 + R), their reflections added without

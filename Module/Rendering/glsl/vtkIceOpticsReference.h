@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vtkIceOpticsReference
 {
@@ -61,6 +62,59 @@ inline double DielectricReflectance(double cosIncidence, double eta)
   const double rs = (eta * cosI - cosT) / (eta * cosI + cosT);
   const double rp = (eta * cosT - cosI) / (eta * cosT + cosI);
   return 0.5 * (rs * rs + rp * rp);
+}
+
+// How far a ray refracted through a tilted microfacet turns per angle of tilt
+// (iceRefractionSpread): 2 where it was mirrored instead (cosines of opposite signs).
+inline double RefractionSpread(double cosIncidence, double cosTransmitted, double eta)
+{
+  if (cosIncidence * cosTransmitted < 0.0)
+  {
+    return 2.0;
+  }
+  return std::abs(1.0 - eta * std::abs(cosIncidence) / std::max(std::abs(cosTransmitted), 1.0e-3));
+}
+
+// Smith's masking of GGX (iceMasking), alpha = roughness^2.
+inline double Masking(double cosine, double alpha)
+{
+  const double c2 = std::max(cosine * cosine, 1.0e-8);
+  return 2.0 / (1.0 + std::sqrt(1.0 + alpha * alpha * (1.0 - c2) / c2));
+}
+
+// A rough interface's reflected and transmitted shares (iceRoughInterface): Fresnel at eight
+// fixed samples of the visible microfacets, the leaving light masked.
+inline std::pair<double, double> RoughInterface(double cosIncidence, double eta, double alpha)
+{
+  const double c = std::min(1.0, std::max(1.0e-4, std::abs(cosIncidence)));
+  const Vec3 v(std::sqrt(1.0 - c * c), 0.0, c);
+  const Vec3 stretched = glm::normalize(Vec3(alpha * v.x, 0.0, v.z));
+  const Vec3 t2Axis(-stretched.z, 0.0, stretched.x);
+  const double s = 0.5 * (1.0 + stretched.z);
+  const double twoPi = 6.2831853;
+  double reflected = 0.0;
+  double transmitted = 0.0;
+  for (int i = 0; i < 8; ++i)
+  {
+    const double u1 = (i + 0.5) / 8.0;
+    const double u2 = ((3 * i) % 8 + 0.5) / 8.0;
+    const double radius = std::sqrt(u1);
+    const double t1 = radius * std::cos(twoPi * u2);
+    const double t2 = std::sqrt(1.0 - t1 * t1) * (1.0 - s) + radius * std::sin(twoPi * u2) * s;
+    const Vec3 h = t1 * Vec3(0.0, 1.0, 0.0) + t2 * t2Axis +
+      std::sqrt(std::max(0.0, 1.0 - t1 * t1 - t2 * t2)) * stretched;
+    const Vec3 m = glm::normalize(Vec3(alpha * h.x, alpha * h.y, std::max(h.z, 0.0)));
+    const double vm = glm::dot(v, m);
+    const double f = DielectricReflectance(vm, eta);
+    const double reflectedZ = 2.0 * vm * m.z - v.z;
+    reflected += reflectedZ > 0.0 ? f * Masking(reflectedZ, alpha) : 0.0;
+    const double sinT2 = eta * eta * (1.0 - vm * vm);
+    const double cosT = std::sqrt(std::max(0.0, 1.0 - sinT2));
+    const double transmittedZ = -eta * v.z + (eta * vm - cosT) * m.z;
+    transmitted +=
+      sinT2 < 1.0 && transmittedZ < 0.0 ? (1.0 - f) * Masking(transmittedZ, alpha) : 0.0;
+  }
+  return { reflected / 8.0, transmitted / 8.0 };
 }
 
 // A crack's reflectance (iceCrackReflectance): the thin gap's two faces together 2R / (1 + R).

@@ -19,6 +19,7 @@ vec3 iceEnvironmentColor(vec3 directionWC)
 #ifdef ICE_ROUGH_ENVIRONMENT
 uniform samplerCube iceEnvironmentPrefiltered;
 uniform float iceRoughnessLevel;
+uniform float iceRoughnessAlpha; // GGX's alpha, roughness^2
 vec3 icePrefilteredEnvironmentColor(vec3 directionWC, float level)
 {
   vec3 color =

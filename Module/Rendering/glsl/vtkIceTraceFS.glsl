@@ -3,27 +3,38 @@
 //ICE::Dec
 // The refracted light traced through the ice's own triangles (vtkIceMapper::MaxBounces > 1), in
 // the tree of vtkIceTriangleBVH (four texels per node, six per triangle; vtkIceTraceTextures).
-// Mirrored on the CPU by vtkIceTriangleBVH::Intersect and vtkIceOpticsReference::TracedRefraction:
-// change them together.
+// Mirrored on the CPU by vtkIceTriangleBVH::Intersect and vtkIceOpticsReference::TracedRefraction
+// (clean ice; rough ice's functions are mirrored one by one): change them together.
 uniform samplerBuffer iceTraceNodes;
 uniform samplerBuffer iceTraceTriangles;
 uniform mat4 iceTraceWCMC;      // world to the tree's (model) coordinates
 uniform int iceTraceMaxBounces; // hits followed inside the ice
 uniform float iceTraceEpsilon;  // in model units: how far a hit must lie from the ray's start
 
-// The environment seen through the rough ice along a leaving ray. A microfacet tilted by d turns
-// a reflected ray by 2d but a refracted one by (1 - 1/n) d entering and (n - 1) d leaving: the
-// light through both interfaces spreads over a narrower lobe than the reflection, GGX's alpha
-// (roughness^2) in proportion, so it is sampled at its own level (iceTransmissionRoughnessLevel,
-// vtkIceTraceTextures).
+// Rough ice (vtkIceProperty::Roughness) at each interface the traced light crosses:
+// - what it reflects and transmits is iceRoughInterface's single scattering, which mirrors less
+//   near grazing than Fresnel's equations at the geometric normal, and loses what its facets mask;
+// - the environment along a leaving ray is sampled at the level of the path's lobe. A microfacet
+//   tilted by d turns a reflected ray by 2d and a refracted one by iceRefractionSpread(...) d: the
+//   lobe after several interfaces is the hypot of their spreads against the reflected lobe's 2,
+//   GGX's alpha (roughness^2) in proportion (the prefiltered copy's levels are linear in
+//   roughness, vtkIcePrefilteredEnvironment::LevelOf). spread2 is the squared hypot.
 #ifdef ICE_ROUGH_ENVIRONMENT
-uniform float iceTransmissionRoughnessLevel;
-vec3 iceTracedEnvironmentColor(vec3 directionWC)
+vec2 iceTracedInterface(float cosIncidence, float eta)
 {
-  return icePrefilteredEnvironmentColor(directionWC, iceTransmissionRoughnessLevel);
+  return iceRoughInterface(cosIncidence, eta, iceRoughnessAlpha);
+}
+vec3 iceTracedEnvironmentColor(vec3 directionWC, float spread2)
+{
+  return icePrefilteredEnvironmentColor(directionWC, iceRoughnessLevel * sqrt(0.5 * sqrt(spread2)));
 }
 #else
-vec3 iceTracedEnvironmentColor(vec3 directionWC)
+vec2 iceTracedInterface(float cosIncidence, float eta)
+{
+  float r = iceDielectricReflectance(cosIncidence, eta);
+  return vec2(r, 1.0 - r);
+}
+vec3 iceTracedEnvironmentColor(vec3 directionWC, float spread2)
 {
   return iceEnvironmentColor(directionWC);
 }
@@ -138,12 +149,15 @@ bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n
 
 // The light the eye vector e brings back through the ice it enters at positionWC (front normal
 // nFront, eta = n_air / n_ice): refracted in, then at each of up to iceTraceMaxBounces hits from
-// inside Fresnel's share (iceDielectricReflectance) reflects on and the rest refracts out into
+// inside Fresnel's share (iceTracedInterface) reflects on and the rest refracts out into
 // the environment; at the last hit all that is left leaves (refracted, or reflected where it
 // cannot), as does a ray that meets no triangle. Absorbed along every segment.
 vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
 {
   vec3 d = iceRefract(e, nFront, eta);
+  // The squared spread of the path so far, per angle of a microfacet's tilt.
+  float spreadEntering = iceRefractionSpread(dot(e, nFront), dot(d, nFront), eta);
+  float spread2 = spreadEntering * spreadEntering;
   vec3 p = positionWC;
   vec3 throughput = vec3(1.0);
   vec3 light = vec3(0.0);
@@ -165,17 +179,29 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
     vec3 n = normalize(nModel * linear);
     n = dot(n, d) < 0.0 ? -n : n; // outward, along the leaving ray
     vec3 leaving = iceRefract(d, -n, 1.0 / eta);
+    float spreadLeaving = iceRefractionSpread(dot(d, n), dot(leaving, n), 1.0 / eta);
+    float spread2Leaving = spread2 + spreadLeaving * spreadLeaving;
     if (bounce == iceTraceMaxBounces)
     {
       d = leaving;
+      spread2 = spread2Leaving;
       break;
     }
-    float r = iceDielectricReflectance(dot(d, n), 1.0 / eta);
-    light += throughput * (1.0 - r) * iceTracedEnvironmentColor(leaving);
-    throughput *= r;
+    vec2 rt = iceTracedInterface(dot(d, n), 1.0 / eta);
+    light += throughput * rt.y * iceTracedEnvironmentColor(leaving, spread2Leaving);
+    throughput *= rt.x;
     d = iceReflect(d, n);
+    spread2 += 4.0; // the mirror inside turns the ray by twice its facet's tilt
   }
-  return light + throughput * iceTracedEnvironmentColor(d);
+  return light + throughput * iceTracedEnvironmentColor(d, spread2);
 }
 //ICE::Impl
     refracted = iceTracedRefraction(e, icePositionWCVSOutput, nFront, iceRefractionRatio);
+#ifdef ICE_ROUGH_ENVIRONMENT
+    if (iceDielectricFresnel > 0.5)
+    {
+      vec2 frontShares = iceTracedInterface(dot(e, nFront), iceRefractionRatio);
+      fresnel = frontShares.x;
+      refracted *= frontShares.y / max(1.0 - frontShares.x, 1.0e-4);
+    }
+#endif
