@@ -335,6 +335,17 @@ bool ReadRGB(const std::string& path, const Plan& plan, Raster<T>& raster, Failu
       rgb[3 * p] = rgb[3 * p + 1] = rgb[3 * p + 2] = rgb[p];
     }
   }
+  if constexpr (std::is_same<T, float>::value)
+  {
+    // Light is never negative: HDR files hold small negative values where their camera's noise
+    // or compression left them (all eight of blender-data's panoramas, down to -0.004), and NaN
+    // where broken. Gamma correction (a skybox's, the ice's) makes both NaN, which a prefiltered
+    // lobe spreads over its whole neighbourhood.
+    for (float& value : rgb)
+    {
+      value = value > 0.0f ? value : 0.0f;
+    }
+  }
   raster.Width = plan.Width;
   raster.Height = plan.Height;
   raster.RGB.swap(rgb);

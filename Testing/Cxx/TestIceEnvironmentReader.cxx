@@ -510,6 +510,37 @@ int TestIceEnvironmentReader(int argc, char* argv[])
     ok;
   reader->SetFaceSize(0);
 
+  // Light is never negative: an EXR panorama's negative values (its camera's noise; every one of
+  // blender-data's has some) and NaN read as 0, or gamma correction makes them NaN.
+  std::vector<float> noisy = panorama;
+  for (size_t v = 0; v < noisy.size(); v += 5)
+  {
+    noisy[v] = -0.004f;
+  }
+  noisy[3 * (panoramaWidth / 2) * (panoramaWidth / 4) + 2] = std::nanf("");
+  ok = WriteImage(temp + "/noisy.exr", panoramaWidth, panoramaWidth / 2, 3, true, noisy.data()) &&
+    ok;
+  if (ReadAs(reader, temp + "/noisy.exr", vtkIceEnvironmentReader::Equirectangular,
+        panoramaWidth / 4, VTK_FLOAT, "EXR panorama with negative values and a NaN"))
+  {
+    size_t below = 0;
+    ForEachTexel(reader, [&](const double*, vtkDataArray* scalars, vtkIdType t) {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double read = scalars->GetComponent(t, c);
+        below += !(read >= 0.0);
+      }
+    });
+    ok = Report(below == 0,
+           "EXR panorama with negative values and a NaN: " + std::to_string(below) +
+             " values read below 0 or NaN") &&
+      ok;
+  }
+  else
+  {
+    ok = false;
+  }
+
   // A grey 8-bit panorama (the red channel of the pattern) comes back as RGB.
   std::vector<unsigned char> grey(panorama.size() / 3);
   for (size_t p = 0; p < grey.size(); ++p)
