@@ -31,6 +31,13 @@ constexpr double CrackBumpCells = 8.0;
 constexpr double CoreOpticalDepth = 4.0;
 constexpr double CoreColour[3] = { 0.88, 0.92, 0.95 };
 constexpr double CoreRimAir = 0.3;
+// The core's shape: a plume, as water freezing from the faces inwards leaves its air last in a
+// column below the middle (an ice cube's cloud is seldom a ball). Its radii against
+// MilkyCoreRadius: CoreHeight along the model's y axis, CoreWidth across; its centre CoreDrop of
+// the half height below the middle.
+constexpr double CoreHeight = 1.3;
+constexpr double CoreWidth = 0.8;
+constexpr double CoreDrop = 0.12;
 
 // The bubbles (vtkIceProperty::BubbleDensity): one may sit in each cell of a grid fixed to the ice,
 // BubbleCells cells across its extent; the core's radius where there is no core; the share of
@@ -55,8 +62,10 @@ inline void CoreFrame(const double bounds[6], double radius, double centre[3], d
   for (int axis = 0; axis < 3; ++axis)
   {
     const double half = 0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]);
-    centre[axis] = 0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]);
-    scale[axis] = 1.0 / (half * radius > 1.0e-12 ? half * radius : 1.0e-12);
+    const double coreRadius = half * radius * (axis == 1 ? CoreHeight : CoreWidth);
+    centre[axis] =
+      0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]) - (axis == 1 ? CoreDrop * half : 0.0);
+    scale[axis] = 1.0 / (coreRadius > 1.0e-12 ? coreRadius : 1.0e-12);
   }
 }
 
