@@ -139,15 +139,16 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
     }
   }
 
-  // A tight shadow where the ice touches and a wide, faint one around it (the sky it hides);
-  // in the second component the wet ground the melting ice leaves around its foot, with an
-  // uneven edge.
+  // A tight shadow along the line where the ice touches and a wide, faint one around it (the
+  // sky it hides), but none under the ice: clear ice lets the light through and gathers it there
+  // (the third component, a caustic); in the second component the wet ground the melting ice
+  // leaves around its foot, with an uneven edge.
   const std::vector<double> tight = Blur(cover, texels, 0.02 * extent / texel);
   const std::vector<double> wide = Blur(cover, texels, 0.25 * extent / texel);
   const std::vector<double> near = Blur(cover, texels, 0.06 * extent / texel);
   vtkNew<vtkImageData> image;
   image->SetDimensions(texels, texels, 1);
-  image->AllocateScalars(VTK_DOUBLE, 2);
+  image->AllocateScalars(VTK_DOUBLE, 3);
   double* out = static_cast<double*>(image->GetScalarPointer());
   for (int j = 0; j < texels; ++j)
   {
@@ -157,9 +158,18 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
       const double at[3] = { 6.0 * ((i + 0.5) * texel - halfSize) / extent, 0.0,
         6.0 * (halfSize - (j + 0.5) * texel) / extent };
       const double edge = near[k] + 0.12 * vtkIceNoise::FractalNoise(at, 7);
-      out[2 * k] = std::min(1.0, 0.55 * tight[k] + 0.45 * wide[k]);
+      // Well inside the footprint (seen only through the ice), and along its outline.
+      const double t = std::clamp((tight[k] - 0.93) / 0.06, 0.0, 1.0);
+      const double under = t * t * (3.0 - 2.0 * t);
+      const double outline = std::min(1.0, 4.0 * tight[k] * (1.0 - tight[k]));
+      const double shadow = 0.55 * std::max(outline, tight[k]) + 0.45 * wide[k];
+      out[3 * k] = std::min(1.0, shadow * (1.0 - under));
       // Only near the foot: no wet spots of noise alone far from the ice.
-      out[2 * k + 1] = std::clamp((edge - 0.04) / 0.1, 0.0, 1.0) * std::min(1.0, 40.0 * near[k]);
+      out[3 * k + 1] = std::clamp((edge - 0.04) / 0.1, 0.0, 1.0) * std::min(1.0, 40.0 * near[k]);
+      // The light the ice gathers, uneven as its surface is.
+      const double ripples[3] = { 3.0 * at[0], 0.0, 3.0 * at[2] };
+      out[3 * k + 2] =
+        under * std::clamp(0.75 + 0.5 * vtkIceNoise::FractalNoise(ripples, 11), 0.0, 1.0);
     }
   }
   return image;
@@ -175,8 +185,10 @@ vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo)
   vtkSmartPointer<vtkImageData> shadow = ContactShadow(model, halfSize, texels);
   const double* dark = static_cast<const double*>(shadow->GetScalarPointer());
 
-  // Transparent ice lets most light through: its shadow darkens the ground by at most this much.
+  // Transparent ice lets most light through: its shadow darkens the ground by at most this much,
+  // and the light it gathers under itself brightens the ground by up to this much more.
   const double strength = 0.7;
+  const double caustic = 0.6;
   vtkNew<vtkImageData> rgba;
   rgba->SetDimensions(texels, texels, 1);
   rgba->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
@@ -192,9 +204,10 @@ vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo)
       const double t = std::clamp((r - 0.35) / 0.6, 0.0, 1.0);
       const double fade = 1.0 - t * t * (3.0 - 2.0 * t);
       // Wet ground is darker: it reflects more of its light away, scatters less back.
-      const double shade =
-        (1.0 - strength * dark[2 * (j * texels + i)]) * (1.0 - 0.3 * dark[2 * (j * texels + i) + 1]);
-      texel[0] = texel[1] = texel[2] = static_cast<unsigned char>(std::lround(255.0 * shade));
+      const double* d = dark + 3 * (static_cast<size_t>(j) * texels + i);
+      const double shade = (1.0 - strength * d[0]) * (1.0 - 0.3 * d[1]) + caustic * d[2];
+      texel[0] = texel[1] = texel[2] =
+        static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, albedo * shade)));
       texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade));
     }
   }
@@ -216,7 +229,7 @@ vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo)
   ground->SetMapper(mapper);
   ground->SetTexture(texture);
   ground->GetProperty()->LightingOff();
-  ground->GetProperty()->SetColor(albedo, albedo, albedo);
+  ground->GetProperty()->SetColor(1.0, 1.0, 1.0); // the albedo is in the texture
   return ground;
 }
 }

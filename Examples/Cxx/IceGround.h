@@ -16,8 +16,9 @@ namespace IceGround
 // How dark the ground is under `model` (its triangles, y up), standing on the plane at the
 // model's lowest y: the texels of a square of half size `halfSize` around the origin in x and
 // z, `texels` a side, 0 (open ground) to 1 (what the ice's bottom covers), softened with the
-// distance a surface lies above the plane; and (the second component) how wet the ground is
-// around the ice's foot, 0 to 1, with an uneven edge. Two components, double.
+// distance a surface lies above the plane, none well under the ice; (the second component) how
+// wet the ground is around the ice's foot, 0 to 1, with an uneven edge; and (the third) the light
+// the ice gathers on the ground under it, 0 to 1. Three components, double.
 vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize, int texels);
 
 // A ground actor at the model's lowest y: grey (`albedo`), unlit (ambient only, so lights
