@@ -87,18 +87,19 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
   FitDepthRange(s, camera->GetPosition(), camera->GetDirectionOfProjection(), this->DepthRange);
 
   {
-    vtkIceScreenTarget::Drawing drawing(*this->Target, s, 2);
+    vtkIceScreenTarget::Drawing drawing(*this->Target, s, 4);
     vtkOpenGLState* state = drawing.State;
     // Empty interval where there is no ice: front beyond back.
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     drawing.ClearColor(FLT_MAX, -FLT_MAX, 0.0f, 0.0f);
 
     this->PreRender(s);
-    // Stage 0: nearest front face into R. Stage 1: farthest back face into G.
+    // Stage 0: nearest front face into R, its normal into B and A. Stage 1: farthest back face
+    // into G.
     for (this->Stage = 0; this->Stage < (this->FrontOnly ? 1 : 2); ++this->Stage)
     {
       const bool front = this->Stage == 0;
-      state->vtkglColorMask(front, !front, GL_FALSE, GL_FALSE);
+      state->vtkglColorMask(front, !front, front, front);
       drawing.ClearDepth(front ? 1.0 : 0.0);
       state->vtkglDepthFunc(front ? GL_LESS : GL_GREATER);
       for (int i = 0; i < s->GetPropArrayCount(); ++i)
@@ -117,8 +118,9 @@ void vtkIceDepthIntervalPass::Render(const vtkRenderState* s)
 bool vtkIceDepthIntervalPass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  vtkIceShaderSections::InsertDeclarations(
-    fragmentShader, vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Dec"));
+  vtkIceShaderSections::InsertDeclarations(fragmentShader,
+    vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Normal") +
+      vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Dec"));
   vtkIceShaderSections::FillHook(
     fragmentShader, "Output", vtkIceShaderSections::Get(vtkIceDepthIntervalFS, "Impl"));
   return true;

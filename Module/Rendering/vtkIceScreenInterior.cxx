@@ -6,6 +6,7 @@
 #include "vtkIceFrame.h"
 #include "vtkIceMapper.h"
 #include "vtkIceOptics.h"
+#include "vtkIceDepthIntervalFS.h"
 #include "vtkIceScreenInteriorFS.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
@@ -42,6 +43,7 @@ std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
   std::string declarations = std::string(rough ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
     renderer->GetLightingUniforms() + vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") +
     Get(vtkIceSurfaceFS, "Environment") + "uniform float iceRefractionRatio;\n" +
+    Get(vtkIceDepthIntervalFS, "Normal") +
     Get(vtkIceScreenInteriorFS, "Tiles") + vtkIceInteriorTable::Declarations() +
     vtkIceInteriorTable::Functions(complexity, renderer->GetLightingCount()) +
     Get(vtkIceScreenInteriorFS, "Dec");

@@ -10,6 +10,10 @@ usage: TestIceBubbles.py ICE_RENDER WORK_DIR CASE   (Debian's /usr/bin/python3, 
   frontal   seen straight along a face's normal (down the bubbles' grid) they brighten nearly as
             many pixels as seen 12 degrees off it, not a sparse lattice of dots (the grid's walk
             once lost its way there)
+  slanted   seen through the top face from 14 degrees above it, they show there at least a fifth
+            as densely as through the front face: the light refracted at the top face runs down
+            into the cloud (along the eye ray, it grazed above the cloud and the top face showed
+            none: 0.07 % of its pixels against 25 % of the front face's)
 """
 import os
 import sys
@@ -24,6 +28,8 @@ SCENE = ("--model", "cube", "--env", "sky", "--static", "--size", "%dx%d" % (WID
 FRONTAL = ("--camera-position", "0,0,6.5", "--focal-point", "0,0,0", "--view-up", "0,1,0")
 # 6.5 units away too, 12 degrees off the face's normal, sideways and upwards.
 TILTED = ("--camera-position", "1.35,0.9,6.29", "--focal-point", "0,0,0", "--view-up", "0,1,0")
+# 6.5 units away, 14 degrees above the top face's plane.
+SLANTED = ("--camera-position", "0,1.6,6.3", "--focal-point", "0,0,0", "--view-up", "0,1,0")
 check = Checks()
 
 
@@ -95,6 +101,23 @@ def main():
         check("seen along a face's normal the bubbles are nearly as many as 12 degrees off it",
               tilted > 1000 and front >= 0.8 * tilted,
               "%d pixels brightened 12 degrees off the normal, %d along it" % (tilted, front))
+    elif CASE == "slanted":
+        bubbles = bubble_pixels("slanted", *SLANTED)
+        ice = render("slanted-mask", *SLANTED, "--debug-view", "front-depth")
+        plain = render("slanted-plain", *SLANTED, "--bubbles", "0")
+        area = [i for i, (p, q) in enumerate(zip(ice, plain)) if p != q]
+        y0, y1 = min(i // WIDTH for i in area), max(i // WIDTH for i in area)
+
+        def density(low, high):
+            """The share of bubble pixels in a band of the ice's rows (0: its bottom, 1: top)."""
+            band = [i for i in area if low <= (i // WIDTH - y0) / max(y1 - y0, 1) < high]
+            return sum(i in bubbles for i in band) / max(len(band), 1)
+
+        top, front = density(0.9, 1.01), density(0.3, 0.7)
+        check("through a face seen at a slant the bubbles show where the refracted light meets them",
+              front >= 0.1 and top >= 0.2 * front,
+              "%.2f %% of the top face's pixels, %.1f %% of the front face's" %
+              (100 * top, 100 * front))
     else:
         sys.exit("unknown case " + CASE)
     return 1 if check.failures else 0

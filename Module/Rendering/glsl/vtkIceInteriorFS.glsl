@@ -222,7 +222,8 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
 // `viewDepth` in front of the camera) up to the nearest back face at view depth `backDepth`
 // (0: none), as vec4(add, keep) (iceInteriorOver).
-vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float backDepth)
+vec4 iceInteriorAlong(
+  vec3 positionWC, vec3 positionMC, vec3 normalWC, float viewDepth, float backDepth)
 {
   vec4 t = vec4(0.0, 0.0, 0.0, 1.0);
   vec3 e = iceEyeVectorWC(positionWC);
@@ -235,10 +236,19 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float b
   // The ray in model coordinates: s runs over world units from the front to the back face.
   vec3 o = positionMC;
   vec3 d = mat3(iceWCMCMatrix) * e;
+  // The cloud and its bubbles are seen along the ray refracted at the front face (normalWC),
+  // over the eye ray's length in the ice: through a face seen at a slant they show where the
+  // light that reaches the eye crossed the ice, not behind the face's outline. The cracks and air
+  // planes keep the eye ray, as the paper's passes draw them.
+  vec3 refracted = iceRefract(e, dot(normalWC, e) < 0.0 ? normalWC : -normalWC,
+    iceRefractionRatio);
+  vec3 dCloud = mat3(iceWCMCMatrix) * refracted;
+  float alongCloud = dot(refracted, iceViewDirectionWC);
 
   // The milky core behind the air: the air planes in front of it are seen through less of it.
   vec3 coreOrigin = (o - iceCoreCenter) * iceCoreScale;
-  vec3 coreDirection = d * iceCoreScale;
+  vec3 coreDirection = dCloud * iceCoreScale;
+  vec3 coreDirectionEye = d * iceCoreScale;
   if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
   {
     float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sBack, iceCoreDensity);
@@ -259,14 +269,14 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, float viewDepth, float b
     vec4 layer = iceAirLayer(bubble, iceMilkiness, iceInteriorDebug == ICE_DEBUG_AIR);
     if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
     {
-      layer.a *= iceAirNearCore(coreOrigin + s * coreDirection,
-        iceCoreOpticalDepth(coreOrigin, coreDirection, s, iceCoreDensity));
+      layer.a *= iceAirNearCore(coreOrigin + s * coreDirectionEye,
+        iceCoreOpticalDepth(coreOrigin, coreDirectionEye, s, iceCoreDensity));
     }
     iceInteriorOver(t, layer.rgb, hit ? layer.a : 0.0);
   }
 
   // The bubbles in front of the core's cloud and the air planes they lie in.
-  vec4 bubbles = iceBubbles(o, d, sBack, coreOrigin, coreDirection, viewDepth, along);
+  vec4 bubbles = iceBubbles(o, dCloud, sBack, coreOrigin, coreDirection, viewDepth, alongCloud);
   t = vec4(bubbles.rgb + bubbles.a * t.rgb, bubbles.a * t.a);
 
   // Cracks: a crack the ray misses (no crossing in the ice, or outside the outline) is skipped.

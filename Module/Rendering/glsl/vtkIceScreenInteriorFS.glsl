@@ -33,7 +33,8 @@ int iceAirHere() { return iceTileEntry(1); }
 int iceAirRecord(int j) { return iceTileEntry(2 + iceTileEntry(0) + j); }
 //ICE::Dec
 // The screen-space interior (vtkIceScreenInterior): one ice prop's interior once per pixel, from
-// its own nearest front face (the view depth in the depth interval's R; FLT_MAX: none) to the
+// its own nearest front face (the view depth in the depth interval's R, its normal in B and A;
+// FLT_MAX: none) to the
 // nearest back face of the ice (the back-face target's alpha), written as vec4(add, keep). The quad reaches only the prop's front faces (depth
 // test); where ice props overlap, only the nearest one's interior is written.
 uniform sampler2D iceDepthInterval;
@@ -44,7 +45,8 @@ uniform mat4 iceDCWCMatrix; // normalised device coordinates to world
 uniform sampler2D iceNearestFront;
 //ICE::Impl
   ivec2 texel = iceScreenTexel();
-  float front = texelFetch(iceDepthInterval, texel, 0).r;
+  vec4 frontTexel = texelFetch(iceDepthInterval, texel, 0);
+  float front = frontTexel.r;
   if (front > texelFetch(iceNearestFront, texel, 0).r)
   {
     discard;
@@ -69,5 +71,5 @@ uniform sampler2D iceNearestFront;
   float widthSlope = (widthB - widthA) / (depthB - depthA);
   icePixelFootprint = vec2(widthA - depthA * widthSlope, widthSlope);
   vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
-  gl_FragData[0] = iceInteriorAlong(
-    positionWC, positionMC, front, texelFetch(iceBackNormals, texel, 0).a);
+  gl_FragData[0] = iceInteriorAlong(positionWC, positionMC, iceDecodeNormal(frontTexel.ba), front,
+    texelFetch(iceBackNormals, texel, 0).a);
