@@ -63,6 +63,11 @@ struct Configuration
   bool Culling = true;
   bool Moving = false; // a ball circles the ice, moved before every frame
   int Bounces = 1;     // vtkIceMapper::MaxBounces (exit point)
+  // The ice-cube look's parts (vtkIceProperty, exit point only): Roughness, MilkyCoreRadius
+  // (with the preset's Milkiness 0.4), BubbleDensity.
+  double Roughness = 0.0;
+  double MilkyCore = 0.0;
+  double Bubbles = 0.0;
 
   // Results.
   std::vector<double> Times;    // wall-clock milliseconds per timed frame

@@ -151,6 +151,26 @@ std::vector<Group> DefineGroups()
     groups.push_back(g);
   }
 
+  // The default picture's look (the ice-cube preset) on the cube, part by part: the trace, the
+  // frost, the milky core, the bubbles.
+  Group look;
+  look.Id = "look-cube";
+  look.Title = "cube, static environment, exit point, ice about 1/5 of the screen";
+  look.Object = "cube";
+  look.Configurations = { Plain() };
+  for (int part = 0; part < 5; ++part)
+  {
+    static const char* const labels[] = { "exit point", "8 bounces", "8 bounces, roughness 0.08",
+      "8 bounces, roughness 0.08, milky core 0.5", "ice-cube look: + bubbles 1" };
+    Configuration c = Ice(labels[part], Material::ExitPoint);
+    c.Bounces = part >= 1 ? 8 : 1;
+    c.Roughness = part >= 2 ? 0.08 : 0.0;
+    c.MilkyCore = part >= 3 ? 0.5 : 0.0;
+    c.Bubbles = part >= 4 ? 1.0 : 0.0;
+    look.Configurations.push_back(c);
+  }
+  groups.push_back(look);
+
   for (const char* size : { "1k", "10k", "100k", "1M" })
   {
     Group g;

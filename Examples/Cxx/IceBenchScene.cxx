@@ -8,6 +8,7 @@
 #include "vtkIceCubeMapPass.h"
 #include "vtkIceMapper.h"
 #include "vtkIcePass.h"
+#include "vtkIceProperty.h"
 
 #include "vtkActor.h"
 #include "vtkMath.h"
@@ -127,6 +128,11 @@ IceBench::Scene IceBench::BuildScene(
     {
       mapper->SetTwoSidedMethodToExitPoint();
       mapper->SetMaxBounces(c.Bounces);
+      vtkIceProperty* look = mapper->GetIceProperty();
+      look->SetRoughness(c.Roughness);
+      look->SetMilkyCoreRadius(c.MilkyCore);
+      look->SetMilkiness(c.MilkyCore > 0.0 ? 0.4 : look->GetMilkiness());
+      look->SetBubbleDensity(c.Bubbles);
     }
     if (c.Ice != Material::OneSided)
     {
