@@ -49,6 +49,12 @@ int main(int argc, char* argv[])
   const IceBench::Schedule schedule = IceBench::ChooseSchedule(options.Quick, options.Frames);
   const int frames = schedule.Rounds * schedule.PerRound;
 
+  // `--only tree`: the trace's tree alone (no window); a full run measures it at its end.
+  if (options.Only == "tree")
+  {
+    IceBench::MeasureTrees(std::cout);
+    return std::cout.flush() ? 0 : Fail("cannot write to standard output", 1);
+  }
   std::vector<Group> groups = IceBench::SelectGroups(options.Quick, options.Only);
   if (groups.empty())
   {
@@ -119,6 +125,10 @@ int main(int argc, char* argv[])
 
   const std::vector<IceBench::Target> targets = IceBench::EvaluateTargets(groups);
   IceBench::PrintTargets(std::cout, targets);
+  if (!options.Quick && options.Only.empty())
+  {
+    IceBench::MeasureTrees(std::cout);
+  }
   std::cout << "\nice-bench: " << groups.size() << " groups in " << IceBench::Fixed(seconds, 1)
             << " s\n";
 

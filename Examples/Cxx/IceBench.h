@@ -3,7 +3,8 @@
 // ice-bench: the measured configurations and their results, shared by the measuring program and
 // the plot (IceBenchPlot.cxx), and the program's parts, one job a file: IceBenchOptions.cxx,
 // IceBenchGroups.cxx, IceBenchScene.cxx (IceBenchScene.h), IceBenchMeasure.cxx,
-// IceBenchMachine.cxx, IceBenchTargets.cxx, IceBenchReport.cxx and main in IceBench.cxx.
+// IceBenchMachine.cxx, IceBenchTargets.cxx, IceBenchReport.cxx, IceBenchTree.cxx and main in
+// IceBench.cxx.
 #ifndef IceBench_h
 #define IceBench_h
 
@@ -146,6 +147,11 @@ struct Machine
   std::string VTK;
   int MultiSamples = 0;
 };
+
+// IceBenchTree.cxx
+// Times vtkIceTriangleBVH's build on a few objects up to a million triangles and prints it with
+// the tree's size (what the trace uploads).
+void MeasureTrees(std::ostream& out);
 
 // IceBenchOptions.cxx
 // Prints "ice-bench: `message`" to standard error and returns `code`.
