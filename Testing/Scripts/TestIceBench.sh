@@ -151,6 +151,14 @@ expect_usage_error "missing value" "needs a value" --csv
 expect_usage_error "unknown back end" "bad --backend" --backend vulkan
 expect_usage_error "no group matches" "no group matches" --only nothing --csv ''
 
+# The trace's tree alone: one row per object, each with its triangles, build time and size.
+if "$ice_bench" --only tree >out.txt 2>err.txt && grep -q "^== The trace's tree" out.txt &&
+  [ "$(grep -cE '^   (cube|teapot|sphere-100k|sphere-1M) +[0-9]+ +[0-9.]+ +[0-9]+ +[0-9]+ +[0-9]+ +[0-9.]+$' out.txt)" -eq 4 ]; then
+  echo "ok   --only tree prints the tree of four objects"
+else
+  echo "FAIL --only tree: $(cat out.txt err.txt | tail -6)"; failures=$((failures + 1))
+fi
+
 if "$ice_bench" --help | grep -q "^usage: ice-bench"; then
   echo "ok   --help"
 else
