@@ -13,7 +13,7 @@ panorama, its camera, filmic tone mapping), with the ice as nature makes it:
 
 Three steps, each in the interpreter that has what it needs:
     /usr/bin/python3 natural_ice_cube.py mesh DIR    # the model (vtk and vtkice: the build's)
-    VENV/bin/python natural_ice_cube.py render DIR    # mitsuba (the scalar_rgb variant), numpy, Pillow
+    VENV/bin/python natural_ice_cube.py render DIR    # mitsuba (scalar_rgb), numpy, Pillow
     VENV/bin/python natural_ice_cube.py compare DIR ICE.png  # flip-evaluator, numpy, Pillow
 `render` writes DIR/mitsuba.png (tone mapped as ice-render's filmic curve), `compare` the FLIP
 difference of ICE.png (ice-render's picture of the same size) against it, and a side-by-side

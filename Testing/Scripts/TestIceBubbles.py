@@ -114,7 +114,7 @@ def main():
             return sum(i in bubbles for i in band) / max(len(band), 1)
 
         top, front = density(0.9, 1.01), density(0.3, 0.7)
-        check("through a face seen at a slant the bubbles show where the refracted light meets them",
+        check("through a face seen at a slant the bubbles show where the refracted light is",
               front >= 0.1 and top >= 0.2 * front,
               "%.2f %% of the top face's pixels, %.1f %% of the front face's" %
               (100 * top, 100 * front))

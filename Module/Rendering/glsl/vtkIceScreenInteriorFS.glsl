@@ -34,9 +34,9 @@ int iceAirRecord(int j) { return iceTileEntry(2 + iceTileEntry(0) + j); }
 //ICE::Dec
 // The screen-space interior (vtkIceScreenInterior): one ice prop's interior once per pixel, from
 // its own nearest front face (the view depth in the depth interval's R, its normal in B and A;
-// FLT_MAX: none) to the
-// nearest back face of the ice (the back-face target's alpha), written as vec4(add, keep). The quad reaches only the prop's front faces (depth
-// test); where ice props overlap, only the nearest one's interior is written.
+// FLT_MAX: none) to the nearest back face of the ice (the back-face target's alpha), written as
+// vec4(add, keep). The quad reaches only the prop's front faces (depth test); where ice props
+// overlap, only the nearest one's interior is written.
 uniform sampler2D iceDepthInterval;
 uniform sampler2D iceBackNormals;
 uniform mat4 iceDCWCMatrix; // normalised device coordinates to world
