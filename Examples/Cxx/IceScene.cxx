@@ -370,12 +370,15 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
   return texture;
 }
 
+namespace
+{
 bool IsHighDynamicRange(vtkTexture* environment)
 {
   // An HDR panorama holds linear light: shown gamma-corrected, as the ice then shows it too.
   vtkImageData* face =
     environment ? vtkImageData::SafeDownCast(environment->GetInputDataObject(0, 0)) : nullptr;
   return face && face->GetScalarType() == VTK_FLOAT;
+}
 }
 
 void AddEnvironment(vtkRenderer* renderer, vtkTexture* environment)
