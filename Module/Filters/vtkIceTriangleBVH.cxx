@@ -24,7 +24,14 @@ struct Triangle
   Vec Corner[3];
   Vec Normal[3];
   Vec Centroid;
+  Vec Low; // bounds of the corners
+  Vec High;
 };
+
+// The surface-area split's bins per axis, and the depth from which the median split takes over:
+// from there log2(MaximumTriangles / LeafSize) = 21 more levels at most stay within MaximumDepth.
+constexpr int Bins = 12;
+constexpr int SurfaceAreaDepth = vtkIceTriangleBVH::MaximumDepth - 24;
 
 struct Builder
 {
@@ -93,6 +100,107 @@ struct Builder
     return child;
   }
 
+  // Binned surface-area heuristic: Order[first, last) partitioned at the best of Bins - 1 planes
+  // per axis between the centroids' bounds; returns where the second child starts (first: none
+  // better than putting everything on one side).
+  int SurfaceAreaSplit(int first, int last, const Vec& centreLow, const Vec& centreHigh)
+  {
+    struct Bin
+    {
+      Vec Low;
+      Vec High;
+      int Count = 0;
+    };
+    auto area = [](const Vec& low, const Vec& high) {
+      const double x = high[0] - low[0];
+      const double y = high[1] - low[1];
+      const double z = high[2] - low[2];
+      return x * y + y * z + z * x;
+    };
+    auto grow = [](Vec& low, Vec& high, const Vec& otherLow, const Vec& otherHigh) {
+      for (int a = 0; a < 3; ++a)
+      {
+        low[a] = std::min(low[a], otherLow[a]);
+        high[a] = std::max(high[a], otherHigh[a]);
+      }
+    };
+    double bestCost = std::numeric_limits<double>::max();
+    int bestAxis = -1;
+    int bestPlane = 0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double extent = centreHigh[axis] - centreLow[axis];
+      if (!(extent > 0.0))
+      {
+        continue;
+      }
+      std::array<Bin, Bins> bins;
+      for (Bin& b : bins)
+      {
+        b.Low.fill(std::numeric_limits<double>::max());
+        b.High.fill(-std::numeric_limits<double>::max());
+      }
+      for (int i = first; i < last; ++i)
+      {
+        const Triangle& t = this->Input[this->Order[i]];
+        Bin& b = bins[this->BinOf(t, axis, centreLow[axis], extent)];
+        ++b.Count;
+        grow(b.Low, b.High, t.Low, t.High);
+      }
+      // Areas and counts of every prefix of bins, then sweep the suffixes against them.
+      std::array<double, Bins> leftArea;
+      std::array<int, Bins> leftCount;
+      Vec low;
+      Vec high;
+      low.fill(std::numeric_limits<double>::max());
+      high.fill(-std::numeric_limits<double>::max());
+      int count = 0;
+      for (int b = 0; b < Bins; ++b)
+      {
+        grow(low, high, bins[b].Low, bins[b].High);
+        count += bins[b].Count;
+        leftArea[b] = count > 0 ? area(low, high) : 0.0;
+        leftCount[b] = count;
+      }
+      low.fill(std::numeric_limits<double>::max());
+      high.fill(-std::numeric_limits<double>::max());
+      count = 0;
+      for (int b = Bins - 1; b > 0; --b)
+      {
+        grow(low, high, bins[b].Low, bins[b].High);
+        count += bins[b].Count;
+        if (count == 0 || leftCount[b - 1] == 0)
+        {
+          continue;
+        }
+        const double cost = leftArea[b - 1] * leftCount[b - 1] + area(low, high) * count;
+        if (cost < bestCost)
+        {
+          bestCost = cost;
+          bestAxis = axis;
+          bestPlane = b;
+        }
+      }
+    }
+    if (bestAxis < 0)
+    {
+      return first;
+    }
+    const double extent = centreHigh[bestAxis] - centreLow[bestAxis];
+    return static_cast<int>(std::partition(this->Order.begin() + first, this->Order.begin() + last,
+                              [&](int i) {
+                                return this->BinOf(this->Input[i], bestAxis, centreLow[bestAxis],
+                                         extent) < bestPlane;
+                              }) -
+      this->Order.begin());
+  }
+
+  static int BinOf(const Triangle& t, int axis, double low, double extent)
+  {
+    const int b = static_cast<int>(Bins * (t.Centroid[axis] - low) / extent);
+    return std::min(Bins - 1, std::max(0, b));
+  }
+
   // Appends the node splitting Order[first, last) in two children; returns its index.
   int Split(int first, int last, int depth)
   {
@@ -109,12 +217,20 @@ struct Builder
         axis = a;
       }
     }
-    // The median split halves the count whatever the shape: the depth stays log2(n / LeafSize).
-    const int middle = first + (last - first) / 2;
-    std::nth_element(this->Order.begin() + first, this->Order.begin() + middle,
-      this->Order.begin() + last, [this, axis](int a, int b) {
-        return this->Input[a].Centroid[axis] < this->Input[b].Centroid[axis];
-      });
+    // A binned surface-area split where it finds one: a ray meets a box in proportion to its area,
+    // so the children of least area times triangles are the fewest visits. Deep in the tree (or
+    // where all centroids fall in one bin) the median split, which halves the count whatever the
+    // shape: the depth then stays within MaximumDepth.
+    int middle =
+      depth < SurfaceAreaDepth ? this->SurfaceAreaSplit(first, last, centreLow, centreHigh) : first;
+    if (middle <= first || middle >= last)
+    {
+      middle = first + (last - first) / 2;
+      std::nth_element(this->Order.begin() + first, this->Order.begin() + middle,
+        this->Order.begin() + last, [this, axis](int a, int b) {
+          return this->Input[a].Centroid[axis] < this->Input[b].Centroid[axis];
+        });
+    }
     const Child children[2] = { this->Make(first, middle, depth + 1),
       this->Make(middle, last, depth + 1) };
     float* node = this->Nodes->data() + 16 * index; // the vector may have grown
@@ -176,6 +292,8 @@ bool vtkIceTriangleBVH::Build(vtkPolyData* surface, vtkDataArray* normals)
     for (int i = 0; i < 3; ++i)
     {
       t.Centroid[i] = (t.Corner[0][i] + t.Corner[1][i] + t.Corner[2][i]) / 3.0;
+      t.Low[i] = std::min({ t.Corner[0][i], t.Corner[1][i], t.Corner[2][i] });
+      t.High[i] = std::max({ t.Corner[0][i], t.Corner[1][i], t.Corner[2][i] });
     }
     builder.Input.push_back(t);
   };

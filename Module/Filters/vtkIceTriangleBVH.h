@@ -6,8 +6,10 @@
  *          (for the project's modules: not installed).
  *
  * Build() takes the surface's polygons and triangle strips (polygons split into fans) with point
- * normals and makes a binary tree of axis-aligned boxes, split at the median of the longest axis
- * of the triangles' centroids down to at most LeafSize triangles. GetNodes() holds four RGBA texels
+ * normals and makes a binary tree of axis-aligned boxes down to at most LeafSize triangles, each
+ * split by the binned surface-area heuristic (12 planes per axis; the median of the centroids'
+ * longest axis where it finds none, and from depth MaximumDepth - 24 on, so the depth stays within
+ * MaximumDepth). GetNodes() holds four RGBA texels
  * per node, two per child: its box's minimum with its node's index (or a leaf's first triangle),
  * its box's maximum with minus its triangle count for a leaf (0 for a node), so a visit reads
  * both children's boxes at once; node 0 is the root. GetTriangles() holds six texels per
