@@ -7,6 +7,7 @@
 
 #include "vtkIceBlockSource.h"
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceCubeMapTexture.h"
 #include "vtkIceEnvironmentReader.h"
 #include "vtkIceMapper.h"
 #include "vtkIceCubeMapPass.h"
@@ -370,23 +371,13 @@ vtkSmartPointer<vtkTexture> LoadEnvironment(const std::string& environment, std:
   return texture;
 }
 
-namespace
-{
-bool IsHighDynamicRange(vtkTexture* environment)
-{
-  // An HDR panorama holds linear light: shown gamma-corrected, as the ice then shows it too.
-  vtkImageData* face =
-    environment ? vtkImageData::SafeDownCast(environment->GetInputDataObject(0, 0)) : nullptr;
-  return face && face->GetScalarType() == VTK_FLOAT;
-}
-}
-
 void AddEnvironment(vtkRenderer* renderer, vtkTexture* environment)
 {
   renderer->SetEnvironmentTexture(environment);
   vtkNew<vtkSkybox> skybox;
   skybox->SetTexture(environment);
-  skybox->SetGammaCorrect(IsHighDynamicRange(environment));
+  // An HDR environment holds linear light: shown gamma-corrected, as the ice then shows it too.
+  skybox->SetGammaCorrect(vtkIceCubeMapTexture::HoldsHighDynamicRange(environment));
   renderer->AddActor(skybox);
 }
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIceCubeMapPass.h"
 
+#include "vtkIceCubeMapTexture.h"
+
 #include "vtkIceCubeMapCompositor.h"
 #include "vtkIceMapperAccess.h"
 
@@ -42,20 +44,11 @@ vtkCxxSetObjectMacro(vtkIceCubeMapPass, Compositor, vtkIceCubeMapCompositor);
 
 namespace
 {
-// Whether the renderer's environment texture holds floats (an HDR environment, such as
-// vtkIceEnvironmentReader gives for EXR or HDR files): the cube maps then keep values above 1.
+// Whether the renderer's environment is HDR: the cube maps then keep values above 1. The texture
+// would bring its input up to date when it is first drawn; this pass runs first.
 bool HighDynamicRange(vtkRenderer* renderer)
 {
-  vtkTexture* environment = renderer->GetEnvironmentTexture();
-  if (!environment || environment->GetNumberOfInputConnections(0) == 0)
-  {
-    return false;
-  }
-  // The texture would bring its input up to date when it is first drawn; this pass runs first.
-  environment->GetInputAlgorithm(0, 0)->Update();
-  vtkImageData* face = vtkImageData::SafeDownCast(environment->GetInputDataObject(0, 0));
-  vtkDataArray* texels = face ? face->GetPointData()->GetScalars() : nullptr;
-  return texels && (texels->GetDataType() == VTK_FLOAT || texels->GetDataType() == VTK_DOUBLE);
+  return vtkIceCubeMapTexture::HoldsHighDynamicRange(renderer->GetEnvironmentTexture());
 }
 }
 

@@ -7,9 +7,12 @@
 #define vtkIceCubeMapTexture_h
 
 #include "vtkAlgorithm.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTexture.h"
 
@@ -53,6 +56,19 @@ inline void SetFaceInformation(vtkInformationVector* outputVector, int size, int
     info->Set(vtkDataObject::ORIGIN(), origin, 3);
     vtkDataObject::SetPointDataActiveScalarInfo(info, scalarType, 3);
   }
+}
+// Whether `texture`'s images hold floats (an HDR environment, such as vtkIceEnvironmentReader
+// gives for EXR or HDR files: linear light, values above 1). Brings its input up to date.
+inline bool HoldsHighDynamicRange(vtkTexture* texture)
+{
+  if (!texture || texture->GetNumberOfInputConnections(0) == 0)
+  {
+    return false;
+  }
+  texture->GetInputAlgorithm(0, 0)->Update();
+  vtkImageData* face = vtkImageData::SafeDownCast(texture->GetInputDataObject(0, 0));
+  vtkDataArray* texels = face ? face->GetPointData()->GetScalars() : nullptr;
+  return texels && (texels->GetDataType() == VTK_FLOAT || texels->GetDataType() == VTK_DOUBLE);
 }
 }
 
