@@ -17,13 +17,13 @@ constexpr double CrackSpecularPower = 40.0;
 // The cracks as sheets (the screen-space interior, vtkIceProperty::CrackReflection): how much of
 // the bumps' tilt the mirror keeps, the share of a crack's radius along its outline that scatters
 // white, and how white per unit of CrackReflection.
-constexpr double CrackMirrorBumps = 0.3;
-constexpr double CrackEdgeWidth = 0.06;
+constexpr double CrackMirrorBumps = 0.08;
+constexpr double CrackEdgeWidth = 0.025;
 constexpr double CrackEdge = 1.25;
 // How far the crack sheets' normals tilt with the noise fixed to them.
 constexpr double CrackBumpStrength = 0.6;
 // Noise cells across the ice's extent on the crack sheets (their bump frequency times the extent).
-constexpr double CrackBumpCells = 8.0;
+constexpr double CrackBumpCells = 24.0;
 
 // The milky core (vtkIceProperty::MilkyCoreRadius): the optical depth of a ray through its centre
 // at Milkiness 1 (the core covers 1 - exp(-depth) of what is behind it), the colour its air

@@ -137,7 +137,11 @@ bool Light(int method)
   const double bright = brightness(2, 2.0) - brightness(0, 2.0);
   std::cout << MethodName(method) << "cracks add " << dark << ", " << lit << ", " << bright
             << " (sum of RGB in the ice) under a light of intensity 0, 1, 2\n";
-  return Expect(dark == 0.0 && lit > 3000.0 && bright > 1.3 * lit,
+  // The screen-space interior weights a crack's highlight by the gap's reflectance, as its mirror:
+  // a few percent where a crack faces the headlight, so its highlights add less (2 348 on
+  // llvmpipe; above 3 000 before the weight, when they covered the cracks in white blotches).
+  const double shows = method == vtkIceMapper::InteriorScreenSpace ? 1000.0 : 3000.0;
+  return Expect(dark == 0.0 && lit > shows && bright > 1.3 * lit,
     std::string(MethodName(method)) + "cracks show only in the light and brighten with it");
 }
 

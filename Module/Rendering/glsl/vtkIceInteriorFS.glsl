@@ -332,11 +332,15 @@ vec4 iceInteriorAlong(
       textureLod(iceInteriorBump, (o + s * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;
     n = normalize(n - iceCrackBumpStrength * (gradient - dot(gradient, n) * n));
     n = dot(n, e) > 0.0 ? -n : n;
-    highlights += iceCrackLight(n, -e, positionWC + s * e);
+    // A thin gap of air reflects a light as it reflects the environment: little where it is seen
+    // face on, all of it beyond the critical angle; and as a flat fracture, with part of the tilt.
+    vec3 mirrorNormal = normalize(mix(sheetNormal, n, ICE_CRACK_MIRROR_BUMPS));
+    highlights += iceCrackReflectance(dot(e, mirrorNormal), 1.0 / iceRefractionRatio) *
+      iceCrackLight(mirrorNormal, -e, positionWC + s * e);
     if (s < nearest)
     {
       nearest = s;
-      nearestNormal = normalize(mix(sheetNormal, n, ICE_CRACK_MIRROR_BUMPS));
+      nearestNormal = mirrorNormal;
       nearestEdge = length(hit.xy) / max(outline, 1.0e-6);
     }
   }
