@@ -13,9 +13,12 @@
 //   bounces    MaxBounces 2 differs from 1 inside a cube, and 1 is the exit point's picture
 //   tetrahedron  four triangles, one leaf under the root (its second child empty), 6 bounces: the
 //              empty child was a node pointing back at the root, and the traversal never ended
+//   core       the cube with a milky core, 6 bounces: the screen-space interior shows it along
+//              the first segment, the trace on the segments after each reflection inside
 #include "IceTestResources.h"
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
+#include "vtkIceInteriorLook.h"
 #include "vtkIceMapper.h"
 #include "vtkIceOpticsReference.h"
 #include "vtkIcePass.h"
@@ -113,6 +116,7 @@ struct Scene
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkIceTriangleBVH> WorldTree; // the surface in world coordinates, for the reference
   ref::Material Material;
+  ref::TracedCore Core; // density 0: none
 
   Scene(vtkPolyData* surface, const double position[3])
   {
@@ -182,10 +186,22 @@ struct Scene
       return found;
     };
     const dvec3 refracted = ref::TracedRefraction(e, position, nFront,
-      this->Mapper->GetMaxBounces(), epsilon, this->Material, hit, environment);
+      this->Mapper->GetMaxBounces(), epsilon, this->Material, hit, environment, this->Core);
     const dvec3 reflected = environment(ref::Reflect(e, nFront));
     const double f = ref::DielectricReflectance(glm::dot(e, nFront), this->Material.RefractionRatio);
-    colour = 255.0 * (refracted + (reflected - refracted) * f);
+    colour = refracted + (reflected - refracted) * f;
+    double chord;
+    dvec3 unused;
+    if (this->Core.Density > 0.0 && hit(position, e, epsilon, chord, unused))
+    {
+      // The screen-space interior: the core along the refracted ray, over the eye ray's chord.
+      const dvec3 inside = ref::Refract(e, nFront, this->Material.RefractionRatio);
+      const double cover = 1.0 -
+        std::exp(-ref::CoreOpticalDepth((position - this->Core.Center) * this->Core.Scale,
+          inside * this->Core.Scale, chord, this->Core.Density));
+      colour = colour * (1.0 - cover) + this->Core.Colour * cover;
+    }
+    colour *= 255.0;
     return true;
   }
 
@@ -243,10 +259,27 @@ struct Scene
 };
 
 bool AgainstReference(const std::string& name, vtkPolyData* surface, const double camera[3],
-  int bounces, bool transformed, bool absorbing)
+  int bounces, bool transformed, bool absorbing, bool core = false)
 {
   Scene scene(surface, camera);
   scene.Mapper->SetMaxBounces(bounces);
+  if (core)
+  {
+    const double radius = 0.6;
+    const double milkiness = 0.8;
+    scene.Mapper->GetIceProperty()->SetMilkyCoreRadius(radius);
+    scene.Mapper->GetIceProperty()->SetMilkiness(milkiness);
+    double bounds[6];
+    surface->GetBounds(bounds);
+    double centre[3];
+    double scale[3];
+    vtkIceInteriorLook::CoreFrame(bounds, radius, centre, scale);
+    scene.Core.Center = dvec3(centre[0], centre[1], centre[2]);
+    scene.Core.Scale = dvec3(scale[0], scale[1], scale[2]);
+    scene.Core.Density = vtkIceInteriorLook::CoreDensity(milkiness);
+    scene.Core.Colour = dvec3(vtkIceInteriorLook::CoreColour[0],
+      vtkIceInteriorLook::CoreColour[1], vtkIceInteriorLook::CoreColour[2]);
+  }
   if (transformed)
   {
     scene.Ice->RotateZ(20.0);
@@ -302,5 +335,7 @@ int TestIceTrace(int argc, char* argv[])
         [&] { return AgainstReference("absorbing cube", Cube(), corner, 3, false, true); } },
       { "bounces", Bounces },
       { "tetrahedron",
-        [&] { return AgainstReference("tetrahedron", Tetrahedron(), corner, 6, false, false); } } });
+        [&] { return AgainstReference("tetrahedron", Tetrahedron(), corner, 6, false, false); } },
+      { "core",
+        [&] { return AgainstReference("cube with a milky core", Cube(), corner, 6, false, false, true); } } });
 }

@@ -188,9 +188,20 @@ Vec3 ShadeWithDirection(const Vec3& e, const Vec3& nFront, const Vec3& refracted
 // rest refracts out; at the last hit all that is left leaves, as does a ray that meets nothing.
 // `hit(origin, direction, tMin, t, n)` is the nearest triangle (vtkIceTriangleBVH::Intersect, in
 // world coordinates here); tMin the shader's epsilon.
+// The milky core on the traced path (iceTraceCore* of vtkIceTraceFS.glsl), here in world
+// coordinates: density 0 is none.
+struct TracedCore
+{
+  Vec3 Center = Vec3(0.0);
+  Vec3 Scale = Vec3(1.0);
+  double Density = 0.0;
+  Vec3 Colour = Vec3(1.0);
+};
+
 template <typename Hit, typename Environment>
 Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, int maxBounces,
-  double tMin, const Material& material, const Hit& hit, const Environment& environment)
+  double tMin, const Material& material, const Hit& hit, const Environment& environment,
+  const TracedCore& core = TracedCore())
 {
   const double eta = material.RefractionRatio;
   Vec3 d = Refract(e, nFront, eta);
@@ -204,6 +215,13 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
     if (!hit(p, d, tMin, t, n))
     {
       break;
+    }
+    if (bounce > 1 && core.Density > 0.0)
+    {
+      const double cover = 1.0 -
+        std::exp(-CoreOpticalDepth((p - core.Center) * core.Scale, d * core.Scale, t, core.Density));
+      light += throughput * cover * core.Colour;
+      throughput *= 1.0 - cover;
     }
     throughput *= Transmittance(t, material.AttenuationColor, material.InverseAttenuationDistance);
     p += t * d;

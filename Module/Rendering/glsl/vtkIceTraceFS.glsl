@@ -10,6 +10,13 @@ uniform samplerBuffer iceTraceTriangles;
 uniform mat4 iceTraceWCMC;      // world to the tree's (model) coordinates
 uniform int iceTraceMaxBounces; // hits followed inside the ice
 uniform float iceTraceEpsilon;  // in model units: how far a hit must lie from the ray's start
+// The milky core (vtkIceInteriorLook::CoreFrame, model coordinates) on the segments after the
+// first internal reflection: the screen-space interior shows it along the first segment, and
+// without it here a face whose light reflects totally inside would show no cloud at all.
+uniform vec3 iceTraceCoreCenter;
+uniform vec3 iceTraceCoreScale;
+uniform float iceTraceCoreDensity; // 0: none
+uniform vec3 iceTraceCoreColour;
 
 // Rough ice (vtkIceProperty::Roughness) at each interface the traced light crosses:
 // - what it reflects and transmits is iceRoughInterface's single scattering, which mirrors less
@@ -172,6 +179,15 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
           iceTraceEpsilon / length(dModel), 1.0e30, t, nModel))
     {
       break;
+    }
+    if (bounce > 1 && iceTraceCoreDensity > 0.0)
+    {
+      // The core scatters its white light towards the eye and hides what lies behind it.
+      float cover = 1.0 - exp(-iceCoreOpticalDepth(
+        ((iceTraceWCMC * vec4(p, 1.0)).xyz - iceTraceCoreCenter) * iceTraceCoreScale,
+        dModel * iceTraceCoreScale, t, iceTraceCoreDensity));
+      light += throughput * cover * iceTraceCoreColour;
+      throughput *= 1.0 - cover;
     }
     throughput *= iceTransmittance(t, iceAttenuationColor, iceInverseAttenuationDistance);
     p += t * d;
