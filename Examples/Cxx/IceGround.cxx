@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 #include "IceGround.h"
+#include "vtkIceCubeMapTexture.h"
 #include "vtkIceNoise.h"
 
 #include "vtkActor.h"
@@ -175,39 +176,93 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
   return image;
 }
 
-vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo)
+void EnvironmentGroundColour(vtkTexture* environment, double colour[3])
+{
+  colour[0] = colour[1] = colour[2] = 0.5;
+  const int below = 3; // OpenGL's face order: +X, -X, +Y, -Y, +Z, -Z
+  if (!environment || environment->GetNumberOfInputConnections(below) == 0)
+  {
+    return;
+  }
+  environment->GetInputAlgorithm(below, 0)->Update();
+  vtkImageData* face = vtkImageData::SafeDownCast(environment->GetInputDataObject(below, 0));
+  vtkDataArray* texels = face ? face->GetPointData()->GetScalars() : nullptr;
+  if (!texels || texels->GetNumberOfComponents() < 3 || texels->GetNumberOfTuples() == 0)
+  {
+    return;
+  }
+  const bool linear = vtkIceCubeMapTexture::HoldsHighDynamicRange(environment);
+  const double scale = texels->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    double sum = 0.0;
+    for (vtkIdType k = 0; k < texels->GetNumberOfTuples(); ++k)
+    {
+      sum += texels->GetComponent(k, c);
+    }
+    const double mean = std::max(0.0, scale * sum / texels->GetNumberOfTuples());
+    colour[c] = std::min(1.0, linear ? std::pow(mean, 1.0 / 2.2) : mean);
+  }
+}
+
+vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, const double colour[3])
 {
   double bounds[6];
   model->GetBounds(bounds);
   const double extent = std::max({ bounds[1] - bounds[0], bounds[5] - bounds[4], 1.0e-9 });
   const double halfSize = 6.0 * extent;
-  const int texels = 512;
+  const int texels = 512; // the shadow's; the ground's own grain is finer
+  const int fine = 1024;
   vtkSmartPointer<vtkImageData> shadow = ContactShadow(model, halfSize, texels);
   const double* dark = static_cast<const double*>(shadow->GetScalarPointer());
+  // The shadow bilinearly between its texels, at a fine texel's centre (i, j).
+  const auto shadowAt = [&](int i, int j, int c) {
+    const double x = std::clamp((i + 0.5) * texels / fine - 0.5, 0.0, texels - 1.0);
+    const double y = std::clamp((j + 0.5) * texels / fine - 0.5, 0.0, texels - 1.0);
+    const int x0 = std::min(static_cast<int>(x), texels - 2);
+    const int y0 = std::min(static_cast<int>(y), texels - 2);
+    const double fx = x - x0;
+    const double fy = y - y0;
+    const auto at = [&](int xi, int yi) { return dark[3 * (static_cast<size_t>(yi) * texels + xi) + c]; };
+    return (1.0 - fy) * ((1.0 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+      fy * ((1.0 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+  };
 
   // Transparent ice lets most light through: its shadow darkens the ground by at most this much,
   // and the light it gathers under itself brightens the ground by up to this much more.
   const double strength = 0.7;
   const double caustic = 0.6;
   vtkNew<vtkImageData> rgba;
-  rgba->SetDimensions(texels, texels, 1);
+  rgba->SetDimensions(fine, fine, 1);
   rgba->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
   unsigned char* texel = static_cast<unsigned char*>(rgba->GetScalarPointer());
-  for (int j = 0; j < texels; ++j)
+  for (int j = 0; j < fine; ++j)
   {
-    for (int i = 0; i < texels; ++i, texel += 4)
+    for (int i = 0; i < fine; ++i, texel += 4)
     {
       // The texture's rows run with t, from +z (j = 0) to -z, as ContactShadow's do.
-      const double x = ((i + 0.5) / texels - 0.5) * 2.0;
-      const double z = ((j + 0.5) / texels - 0.5) * 2.0;
+      const double x = ((i + 0.5) / fine - 0.5) * 2.0;
+      const double z = ((j + 0.5) / fine - 0.5) * 2.0;
       const double r = std::sqrt(x * x + z * z);
       const double t = std::clamp((r - 0.35) / 0.6, 0.0, 1.0);
       const double fade = 1.0 - t * t * (3.0 - 2.0 * t);
+      // Stone: patches a few ice extents across, a finer mottle and single grains, so the ice
+      // has something to refract and the eye a scale.
+      const double at[3] = { x * halfSize / extent, 0.0, z * halfSize / extent };
+      const double coarse[3] = { 0.8 * at[0], 0.0, 0.8 * at[2] };
+      const double mottle[3] = { 9.0 * at[0], 0.0, 9.0 * at[2] };
+      const double grain = vtkIceNoise::Uniform(31, static_cast<std::uint32_t>(j * fine + i));
+      const double stone = (1.0 + 0.18 * vtkIceNoise::FractalNoise(coarse, 21) +
+                             0.1 * vtkIceNoise::FractalNoise(mottle, 23)) *
+        (grain < 0.03 ? 0.8 : grain > 0.985 ? 1.15 : 1.0);
       // Wet ground is darker: it reflects more of its light away, scatters less back.
-      const double* d = dark + 3 * (static_cast<size_t>(j) * texels + i);
-      const double shade = (1.0 - strength * d[0]) * (1.0 - 0.3 * d[1]) + caustic * d[2];
-      texel[0] = texel[1] = texel[2] =
-        static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, albedo * shade)));
+      const double shade = (1.0 - strength * shadowAt(i, j, 0)) * (1.0 - 0.3 * shadowAt(i, j, 1)) +
+        caustic * shadowAt(i, j, 2);
+      for (int c = 0; c < 3; ++c)
+      {
+        texel[c] = static_cast<unsigned char>(
+          std::lround(255.0 * std::clamp(colour[c] * stone * shade, 0.0, 1.0)));
+      }
       texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade));
     }
   }

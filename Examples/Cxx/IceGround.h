@@ -1,7 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The ground the ice stands on in a photographed environment: a grey disc under the model with
-// its soft contact shadow, fading into the panorama at its rim.
+// The ground the ice stands on in a photographed environment: a disc of stone under the model,
+// coloured as the panorama's own ground, with its soft contact shadow, fading into the panorama at
+// its rim.
 #ifndef IceGround_h
 #define IceGround_h
 
@@ -10,6 +11,7 @@
 class vtkActor;
 class vtkImageData;
 class vtkPolyData;
+class vtkTexture;
 
 namespace IceGround
 {
@@ -21,10 +23,14 @@ namespace IceGround
 // the ice gathers on the ground under it, 0 to 1. Three components, double.
 vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize, int texels);
 
-// A ground actor at the model's lowest y: grey (`albedo`), unlit (ambient only, so lights
-// meant for the scene do not brighten it twice), darkened by ContactShadow and fading out
-// towards its rim.
-vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, double albedo);
+// The colour of the ground a cube-map environment shows (the mean of its -Y face), as displayed:
+// gamma-corrected where the environment holds linear light (HDR), as the skybox shows it.
+void EnvironmentGroundColour(vtkTexture* environment, double colour[3]);
+
+// A ground actor at the model's lowest y: stone of `colour` (as displayed, red, green, blue in
+// [0, 1]) with a grain, unlit (ambient only, so lights meant for the scene do not brighten it
+// twice), darkened by ContactShadow and fading out towards its rim.
+vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, const double colour[3]);
 }
 
 #endif

@@ -418,7 +418,9 @@ vtkActor* Populate(
   }
   if (options.Ground)
   {
-    renderer->AddActor(IceGround::MakeGround(model, 0.5));
+    double colour[3];
+    IceGround::EnvironmentGroundColour(environment, colour);
+    renderer->AddActor(IceGround::MakeGround(model, colour));
   }
   AddEnvironment(renderer, environment);
 
