@@ -176,36 +176,48 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
   return image;
 }
 
-void EnvironmentGroundColour(vtkTexture* environment, double colour[3])
+void EnvironmentColour(vtkTexture* environment, const std::vector<int>& faces, double colour[3])
 {
   colour[0] = colour[1] = colour[2] = 0.5;
-  const int below = 3; // OpenGL's face order: +X, -X, +Y, -Y, +Z, -Z
-  if (!environment || environment->GetNumberOfInputConnections(below) == 0)
-  {
-    return;
-  }
-  environment->GetInputAlgorithm(below, 0)->Update();
-  vtkImageData* face = vtkImageData::SafeDownCast(environment->GetInputDataObject(below, 0));
-  vtkDataArray* texels = face ? face->GetPointData()->GetScalars() : nullptr;
-  if (!texels || texels->GetNumberOfComponents() < 3 || texels->GetNumberOfTuples() == 0)
+  if (!environment)
   {
     return;
   }
   const bool linear = vtkIceCubeMapTexture::HoldsHighDynamicRange(environment);
-  const double scale = texels->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-  for (int c = 0; c < 3; ++c)
+  double sum[3] = { 0.0, 0.0, 0.0 };
+  vtkIdType count = 0;
+  for (int face : faces)
   {
-    double sum = 0.0;
+    if (environment->GetNumberOfInputConnections(face) == 0)
+    {
+      return;
+    }
+    environment->GetInputAlgorithm(face, 0)->Update();
+    vtkImageData* image = vtkImageData::SafeDownCast(environment->GetInputDataObject(face, 0));
+    vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
+    if (!texels || texels->GetNumberOfComponents() < 3)
+    {
+      return;
+    }
+    const double scale = texels->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
     for (vtkIdType k = 0; k < texels->GetNumberOfTuples(); ++k)
     {
-      sum += texels->GetComponent(k, c);
+      for (int c = 0; c < 3; ++c)
+      {
+        sum[c] += scale * texels->GetComponent(k, c);
+      }
     }
-    const double mean = std::max(0.0, scale * sum / texels->GetNumberOfTuples());
+    count += texels->GetNumberOfTuples();
+  }
+  for (int c = 0; c < 3 && count > 0; ++c)
+  {
+    const double mean = std::max(0.0, sum[c] / count);
     colour[c] = std::min(1.0, linear ? std::pow(mean, 1.0 / 2.2) : mean);
   }
 }
 
-vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, const double colour[3])
+vtkSmartPointer<vtkActor> MakeGround(
+  vtkPolyData* model, const double colour[3], const double sheen[3])
 {
   double bounds[6];
   model->GetBounds(bounds);
@@ -255,13 +267,17 @@ vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, const double colour[3])
       const double stone = (1.0 + 0.18 * vtkIceNoise::FractalNoise(coarse, 21) +
                              0.1 * vtkIceNoise::FractalNoise(mottle, 23)) *
         (grain < 0.03 ? 0.8 : grain > 0.985 ? 1.15 : 1.0);
-      // Wet ground is darker: it reflects more of its light away, scatters less back.
-      const double shade = (1.0 - strength * shadowAt(i, j, 0)) * (1.0 - 0.3 * shadowAt(i, j, 1)) +
-        caustic * shadowAt(i, j, 2);
+      // Wet ground is darker: the water film lets less of the light the stone scatters out, and
+      // mirrors the surroundings instead (an eighth of them at the camera's glancing view), less
+      // where the ice hides them: the sheen must not wash out the contact shadow.
+      const double dark = shadowAt(i, j, 0);
+      const double wet = shadowAt(i, j, 1);
+      const double shade = (1.0 - strength * dark) * (1.0 - 0.5 * wet) + caustic * shadowAt(i, j, 2);
+      const double mirrored = 0.12 * wet * (1.0 - dark);
       for (int c = 0; c < 3; ++c)
       {
-        texel[c] = static_cast<unsigned char>(
-          std::lround(255.0 * std::clamp(colour[c] * stone * shade, 0.0, 1.0)));
+        texel[c] = static_cast<unsigned char>(std::lround(
+          255.0 * std::clamp(colour[c] * stone * shade + mirrored * sheen[c], 0.0, 1.0)));
       }
       texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade));
     }

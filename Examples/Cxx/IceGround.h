@@ -8,6 +8,8 @@
 
 #include "vtkSmartPointer.h"
 
+#include <vector>
+
 class vtkActor;
 class vtkImageData;
 class vtkPolyData;
@@ -23,14 +25,17 @@ namespace IceGround
 // the ice gathers on the ground under it, 0 to 1. Three components, double.
 vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize, int texels);
 
-// The colour of the ground a cube-map environment shows (the mean of its -Y face), as displayed:
-// gamma-corrected where the environment holds linear light (HDR), as the skybox shows it.
-void EnvironmentGroundColour(vtkTexture* environment, double colour[3]);
+// The mean colour of faces of a cube-map environment (OpenGL's order: +X, -X, +Y, -Y, +Z, -Z; -Y is
+// the ground it shows, the four sides its horizon), as displayed: gamma-corrected where the
+// environment holds linear light (HDR), as the skybox shows it. Grey where it has no such faces.
+void EnvironmentColour(vtkTexture* environment, const std::vector<int>& faces, double colour[3]);
 
 // A ground actor at the model's lowest y: stone of `colour` (as displayed, red, green, blue in
 // [0, 1]) with a grain, unlit (ambient only, so lights meant for the scene do not brighten it
-// twice), darkened by ContactShadow and fading out towards its rim.
-vtkSmartPointer<vtkActor> MakeGround(vtkPolyData* model, const double colour[3]);
+// twice), darkened by ContactShadow, wet around the ice's foot (darker, with a sheen of `sheen`,
+// what the water mirrors) and fading out towards its rim.
+vtkSmartPointer<vtkActor> MakeGround(
+  vtkPolyData* model, const double colour[3], const double sheen[3]);
 }
 
 #endif

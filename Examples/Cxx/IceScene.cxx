@@ -418,9 +418,11 @@ vtkActor* Populate(
   }
   if (options.Ground)
   {
-    double colour[3];
-    IceGround::EnvironmentGroundColour(environment, colour);
-    renderer->AddActor(IceGround::MakeGround(model, colour));
+    double ground[3];
+    double horizon[3];
+    IceGround::EnvironmentColour(environment, { 3 }, ground);
+    IceGround::EnvironmentColour(environment, { 0, 1, 4, 5 }, horizon);
+    renderer->AddActor(IceGround::MakeGround(model, ground, horizon));
   }
   AddEnvironment(renderer, environment);
 
