@@ -279,22 +279,22 @@ vec4 iceInteriorAlong(
   vec4 bubbles = iceBubbles(o, dCloud, sBack, coreOrigin, coreDirection, viewDepth, alongCloud);
   t = vec4(bubbles.rgb + bubbles.a * t.rgb, bubbles.a * t.a);
 
-  // Cracks: a crack the ray misses (no crossing in the ice, or outside the outline) is skipped.
-  // A GPU skips what no fragment of a warp needs (an NVIDIA H200: 128 cracks 28 -> 19 ms a frame
-  // at 1/5 of the screen); llvmpipe runs it masked, as before (no slower).
+  // Cracks: the nearest the ray crosses inside its outline. A crack the ray misses (no crossing in
+  // the ice, or outside the outline) or meets behind the nearest so far is skipped before its
+  // outline is read; only the nearest is shaded, once: its mirror hides what lies behind it where
+  // it reflects totally, and seen square on a gap reflects a few percent, so the cracks behind
+  // it would add little. A GPU skips what no fragment of a warp needs; llvmpipe runs it masked.
   vec3 highlights = vec3(0.0);
-  bool crackSeen = false;
-  // The nearest crack crossed: a sheet that mirrors the environment (iceCrackReflection) about its
-  // normal, with part of the bumps' tilt (all of it would scatter the image into speckle).
   float nearest = sBack;
-  vec3 nearestNormal = vec3(0.0);
+  int nearestRecord = -1;
   float nearestEdge = 0.0;
   int cracksHere = iceCracksHere();
   for (int j = 0; j < cracksHere; ++j)
   {
     // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
     // shallow sheet at most once inside the outline in practice: the nearer root in the ice.
-    IceLocalRay ray = iceLocalRay(iceCrackRecord(j), o, d);
+    int record = iceCrackRecord(j);
+    IceLocalRay ray = iceLocalRay(record, o, d);
     float a = ray.shape.x;
     float b = ray.shape.y;
     vec3 p = ray.origin;
@@ -310,7 +310,7 @@ vec4 iceInteriorAlong(
     bool in0 = s0 > 0.0 && s0 < sBack;
     bool in1 = s1 > 0.0 && s1 < sBack;
     float s = in0 && (!in1 || s0 < s1) ? s0 : s1;
-    if (discriminant < 0.0 || !(in0 || in1))
+    if (discriminant < 0.0 || !(in0 || in1) || s >= nearest)
     {
       continue;
     }
@@ -320,29 +320,32 @@ vec4 iceInteriorAlong(
     {
       continue;
     }
-    crackSeen = true;
+    nearest = s;
+    nearestRecord = record;
+    nearestEdge = length(hit.xy) / max(outline, 1.0e-6);
+  }
+  bool crackSeen = nearestRecord >= 0;
+  vec3 nearestNormal = vec3(0.0);
+  if (crackSeen)
+  {
     // The sheet's normal (gradient of z - a x^2 - b y^2) back in model, then world space,
     // tilted by the noise fixed to the model (as the paper passes' crack shader, precomputed),
     // facing the viewer.
-    vec3 g = vec3(-2.0 * a * hit.x, -2.0 * b * hit.y, 1.0);
+    IceLocalRay ray = iceLocalRay(nearestRecord, o, d);
+    vec3 hit = ray.origin + nearest * ray.direction;
+    vec3 g = vec3(-2.0 * ray.shape.x * hit.x, -2.0 * ray.shape.y * hit.y, 1.0);
     vec3 n = normalize(
       iceNormalMCWCMatrix * (g.x * ray.row0.xyz + g.y * ray.row1.xyz + g.z * ray.row2.xyz));
     vec3 sheetNormal = dot(n, e) > 0.0 ? -n : n;
     vec3 gradient = iceNormalMCWCMatrix *
-      textureLod(iceInteriorBump, (o + s * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;
+      textureLod(iceInteriorBump, (o + nearest * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;
     n = normalize(n - iceCrackBumpStrength * (gradient - dot(gradient, n) * n));
     n = dot(n, e) > 0.0 ? -n : n;
     // A thin gap of air reflects a light as it reflects the environment: little where it is seen
     // face on, all of it beyond the critical angle; and as a flat fracture, with part of the tilt.
-    vec3 mirrorNormal = normalize(mix(sheetNormal, n, ICE_CRACK_MIRROR_BUMPS));
-    highlights += iceCrackReflectance(dot(e, mirrorNormal), 1.0 / iceRefractionRatio) *
-      iceCrackLight(mirrorNormal, -e, positionWC + s * e);
-    if (s < nearest)
-    {
-      nearest = s;
-      nearestNormal = mirrorNormal;
-      nearestEdge = length(hit.xy) / max(outline, 1.0e-6);
-    }
+    nearestNormal = normalize(mix(sheetNormal, n, ICE_CRACK_MIRROR_BUMPS));
+    highlights = iceCrackReflectance(dot(e, nearestNormal), 1.0 / iceRefractionRatio) *
+      iceCrackLight(nearestNormal, -e, positionWC + nearest * e);
   }
   if (crackSeen && iceInteriorDebug == 0 && iceCrackReflection > 0.0)
   {
