@@ -2,14 +2,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """A natural ice cube path traced by Mitsuba 3, the target for ice-render's default picture.
 
-The scene is ice-render's default (the `cube` model on a grey ground in blender-data's `forest`
+The scene is ice-render's default (the `cube` model on the ground in blender-data's `forest`
 panorama, its camera, filmic tone mapping), with the ice as nature makes it:
 - the rounded cube itself, index of refraction 1.31, a faint blue absorption (the ice-cube
   preset's attenuation colour 0.8, 0.92, 0.98 at 1.2);
 - a core of a few hundred small air bubbles (mixed sizes, small ones most, thickest at the
   centre) and a few vertical streams of them;
 - two thin planar air cracks with irregular outlines;
-- the ground a grey diffuse plane lit by the panorama, fading into it as ice-render's does.
+- the ground a diffuse plane lit by the panorama, of the colour the panorama shows its own ground
+  in (as ice-render's, without its grain), fading into it as ice-render's does.
 
 Three steps, each in the interpreter that has what it needs:
     /usr/bin/python3 natural_ice_cube.py mesh DIR    # the model (vtk and vtkice: the build's)
@@ -164,6 +165,28 @@ def tone_map(linear):
     return toned ** (1.0 / 2.2)
 
 
+def ground_albedo(panorama):
+    """The ground's diffuse reflectance that makes the panorama's light give the colour ice-render
+    shows its ground in (IceGround: the mean of the cube map's -Y face texels, linear light):
+    pi times that radiance over the irradiance the sky above gives a level surface."""
+    rows, columns = panorama.shape[:2]
+    polar = math.pi * (numpy.arange(rows) + 0.5) / rows
+    azimuth = 2.0 * math.pi * (numpy.arange(columns) + 0.5) / columns
+    y = numpy.cos(polar)[:, None] * numpy.ones((1, columns))
+    sine = numpy.sin(polar)[:, None]
+    horizontal = numpy.maximum(numpy.abs(sine * numpy.sin(azimuth)[None, :]),
+                               numpy.abs(sine * numpy.cos(azimuth)[None, :]))
+    solid_angle = sine * (2.0 * math.pi / columns) * (math.pi / rows)
+    up = numpy.maximum(y, 0.0) * solid_angle
+    irradiance = (panorama * up[..., None]).sum(axis=(0, 1))
+    # The -Y face's texels: directions where -y is the largest component, a texel's solid angle
+    # proportional to |y|^3, so each direction weighs 1 / |y|^3 in their plain mean.
+    face = (-y >= horizontal) & (y < 0.0)
+    weight = numpy.where(face, solid_angle / numpy.maximum(numpy.abs(y), 1.0e-6) ** 3, 0.0)
+    radiance = (panorama * weight[..., None]).sum(axis=(0, 1)) / weight.sum()
+    return numpy.clip(math.pi * radiance / numpy.maximum(irradiance, 1.0e-9), 0.0, 1.0).tolist()
+
+
 def render(folder, spp, seed):
     import mitsuba
 
@@ -198,7 +221,8 @@ def render(folder, spp, seed):
                 "bsdf": {"type": "dielectric", "int_ior": IOR, "ext_ior": 1.0},
                 "interior": {"type": "ref", "id": "ice_medium"}},
     }
-    # The ground: grey, lit by the panorama, fading into it from 0.35 to 0.95 of its half size
+    # The ground: of the colour the panorama shows its own ground in (ground_albedo), lit by the
+    # panorama, fading into it from 0.35 to 0.95 of its half size
     # as IceGround's does (smoothstep), slightly below the ice's foot.
     texels = 512
     x = ((numpy.arange(texels) + 0.5) / texels - 0.5) * 2.0
@@ -213,7 +237,8 @@ def render(folder, spp, seed):
         "bsdf": {"type": "mask",
                  "opacity": {"type": "bitmap", "bitmap": mitsuba.Bitmap(fade[..., None]),
                              "raw": True},
-                 "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": GROUND}}},
+                 "bsdf": {"type": "diffuse",
+                          "reflectance": {"type": "rgb", "value": ground_albedo(panorama)}}},
     }
     air = {"type": "dielectric", "int_ior": 1.0, "ext_ior": IOR}
     cracks = [(numpy.array((0.12, 0.05, -0.1)), numpy.array((0.9, 0.35, 0.25)), 0.42),
@@ -253,12 +278,6 @@ def compare(folder, picture):
     side = numpy.concatenate([reference / 255.0, test / 255.0, error_map], axis=1)
     write_png(side, os.path.join(folder, "natural-ice-cube.png"))
     print("FLIP mean %.3f" % mean)
-
-
-# The ground's diffuse reflectance, a grey like concrete's. The forest panorama's irradiance over
-# pi is (0.97, 1.06, 1.26): lit by it this grey is about the linear 0.22 of ice-render's ground
-# (unlit 0.5 gamma-encoded).
-GROUND = [0.2, 0.2, 0.2]
 
 
 def main():
