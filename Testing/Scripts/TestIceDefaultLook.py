@@ -3,7 +3,8 @@
 """ice-render's default look reads as ice, measured: thick ice is bluer than thin ice, at most 1 %
 of the ice's pixels are clipped to white, the centre of the block is milkier than its rim, the
 cracks show as sheets (over their area and along their outline, not only as highlights), the
-environment above the ice keeps its shade (not crushed to black by the tone curve).
+environment above the ice keeps its shade (not crushed to black by the tone curve), the ground
+takes the panorama's own ground colour.
 
 usage: TestIceDefaultLook.py ICE_RENDER WORK_DIR   (Debian's /usr/bin/python3, for vtk)
 """
@@ -16,6 +17,8 @@ ICE_RENDER, WORK = sys.argv[1], sys.argv[2]
 SIZE = "480x360"
 # The default look has no cracks; asked for, they show as sheets in it.
 CRACKS = ("--cracks", "3", "--crack-seed", "2")
+# The default environment where Debian's blender-data is installed (else the sky, no ground).
+FOREST = "/usr/share/blender/datafiles/studiolights/world/forest.exr"
 check = Checks()
 
 
@@ -72,6 +75,14 @@ def main():
             top = mean(sum(p) / 3 for p in look[-width * (height // 10):])  # rows from the bottom
             check("the environment above the ice keeps its shade", top >= 15,
                   "the top tenth of the picture averages %.1f/255" % top)
+            if os.path.exists(FOREST):
+                # The ground in front of the ice (the bottom tenth) takes the colour the forest
+                # shows its own ground in, a brown (red over blue by 18/255 on llvmpipe); the grey
+                # ground it replaced had none.
+                ground = look[:width * (height // 10)]
+                warm = mean(p[0] - p[2] for p in ground)
+                check("the ground takes the panorama's own ground colour", warm >= 8,
+                      "the bottom tenth's red exceeds its blue by %.1f/255" % warm)
         ice = ice_pixels(model, look)
         clipped = sum(1 for i in ice if min(look[i]) >= 254)
         check("%s: at most 1 %% of the ice's pixels clipped to white" % model,
