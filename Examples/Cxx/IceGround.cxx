@@ -235,7 +235,9 @@ vtkSmartPointer<vtkActor> MakeGround(
     const int y0 = std::min(static_cast<int>(y), texels - 2);
     const double fx = x - x0;
     const double fy = y - y0;
-    const auto at = [&](int xi, int yi) { return dark[3 * (static_cast<size_t>(yi) * texels + xi) + c]; };
+    const auto at = [&](int xi, int yi) {
+      return dark[3 * (static_cast<size_t>(yi) * texels + xi) + c];
+    };
     return (1.0 - fy) * ((1.0 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
       fy * ((1.0 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
   };
@@ -270,10 +272,11 @@ vtkSmartPointer<vtkActor> MakeGround(
       // Wet ground is darker: the water film lets less of the light the stone scatters out, and
       // mirrors the surroundings instead (an eighth of them at the camera's glancing view), less
       // where the ice hides them: the sheen must not wash out the contact shadow.
-      const double dark = shadowAt(i, j, 0);
+      const double shadowed = shadowAt(i, j, 0);
       const double wet = shadowAt(i, j, 1);
-      const double shade = (1.0 - strength * dark) * (1.0 - 0.5 * wet) + caustic * shadowAt(i, j, 2);
-      const double mirrored = 0.12 * wet * (1.0 - dark);
+      const double shade =
+        (1.0 - strength * shadowed) * (1.0 - 0.5 * wet) + caustic * shadowAt(i, j, 2);
+      const double mirrored = 0.12 * wet * (1.0 - shadowed);
       for (int c = 0; c < 3; ++c)
       {
         texel[c] = static_cast<unsigned char>(std::lround(
