@@ -69,6 +69,19 @@ inline void CoreFrame(const double bounds[6], double radius, double centre[3], d
   }
 }
 
+// CoreFrame as the shaders' float uniforms.
+inline void CoreFrame(const double bounds[6], double radius, float centre[3], float scale[3])
+{
+  double c[3];
+  double s[3];
+  CoreFrame(bounds, radius, c, s);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    centre[axis] = static_cast<float>(c[axis]);
+    scale[axis] = static_cast<float>(s[axis]);
+  }
+}
+
 inline double CrackBumpFrequency(double extent)
 {
   return CrackBumpCells / extent;

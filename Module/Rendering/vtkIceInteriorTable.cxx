@@ -360,8 +360,8 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
   program->SetUniformf("iceMilkiness", static_cast<float>(this->Look->GetMilkiness()));
   program->SetUniformi("iceInteriorDebug", this->Where.Debug);
   // The milky core: its frame in the placement box, its density from the milkiness.
-  double center[3] = { 0.0, 0.0, 0.0 };
-  double scale[3] = { 1.0, 1.0, 1.0 };
+  float coreCenter[3] = { 0.0f, 0.0f, 0.0f };
+  float coreScale[3] = { 1.0f, 1.0f, 1.0f };
   double density = 0.0;
   if (this->Look->HasMilkyCore())
   {
@@ -373,17 +373,13 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
     vtkIceInteriorLook::CoreFrame(this->Where.Bounds,
       this->Look->GetMilkyCoreRadius() > 0.0 ? this->Look->GetMilkyCoreRadius()
                                              : vtkIceInteriorLook::BubbleCoreRadius,
-      center, scale);
+      coreCenter, coreScale);
   }
   program->SetUniformf("iceBubbleDensity", static_cast<float>(this->Look->GetBubbleDensity()));
   program->SetUniformf("iceBubbleCell",
     static_cast<float>(this->Where.Extent / vtkIceInteriorLook::BubbleCells));
   program->SetUniformf("iceBubbleFade",
     static_cast<float>(vtkIceInteriorLook::BubbleDepthFade / this->Where.Extent));
-  const float coreCenter[3] = { static_cast<float>(center[0]), static_cast<float>(center[1]),
-    static_cast<float>(center[2]) };
-  const float coreScale[3] = { static_cast<float>(scale[0]), static_cast<float>(scale[1]),
-    static_cast<float>(scale[2]) };
   program->SetUniform3f("iceCoreCenter", coreCenter);
   program->SetUniform3f("iceCoreScale", coreScale);
   program->SetUniformf("iceCoreDensity", static_cast<float>(density));

@@ -591,15 +591,12 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   // The milky core along the reflected segments, where the screen-space interior shows it.
   double bounds[6];
   this->GetLookBounds(bounds);
-  double center[3];
-  double scale[3];
-  vtkIceInteriorLook::CoreFrame(bounds, this->IceProperty->GetMilkyCoreRadius(), center, scale);
+  float coreCenter[3];
+  float coreScale[3];
+  vtkIceInteriorLook::CoreFrame(
+    bounds, this->IceProperty->GetMilkyCoreRadius(), coreCenter, coreScale);
   const bool core = this->InteriorMethod == InteriorScreenSpace &&
     this->IceProperty->HasMilkyCore() && this->DebugView == DebugOff;
-  const float coreCenter[3] = { static_cast<float>(center[0]), static_cast<float>(center[1]),
-    static_cast<float>(center[2]) };
-  const float coreScale[3] = { static_cast<float>(scale[0]), static_cast<float>(scale[1]),
-    static_cast<float>(scale[2]) };
   const float coreColour[3] = { static_cast<float>(vtkIceInteriorLook::CoreColour[0]),
     static_cast<float>(vtkIceInteriorLook::CoreColour[1]),
     static_cast<float>(vtkIceInteriorLook::CoreColour[2]) };
