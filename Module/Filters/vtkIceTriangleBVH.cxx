@@ -312,7 +312,16 @@ bool vtkIceTriangleBVH::Build(vtkPolyData* surface, vtkDataArray* normals)
   {
     for (vtkIdType i = 2; i < count; ++i)
     {
-      add(ids[i - 2], ids[i - 1], ids[i]);
+      // A strip's odd triangles run clockwise in its order: turned, every triangle faces as its
+      // cell does (the trace tells inside from outside by it).
+      if (i % 2 == 0)
+      {
+        add(ids[i - 2], ids[i - 1], ids[i]);
+      }
+      else
+      {
+        add(ids[i - 1], ids[i - 2], ids[i]);
+      }
     }
   }
   const vtkIdType triangles = static_cast<vtkIdType>(builder.Input.size());
@@ -359,7 +368,7 @@ bool vtkIceTriangleBVH::Build(vtkPolyData* surface, vtkDataArray* normals)
 
 //------------------------------------------------------------------------------
 bool vtkIceTriangleBVH::Intersect(const double origin[3], const double direction[3], double tMin,
-  double tMax, double& t, double normal[3]) const
+  double tMax, double& t, double normal[3], double faceNormal[3], int orientation) const
 {
   if (this->Nodes.empty())
   {
@@ -395,7 +404,7 @@ bool vtkIceTriangleBVH::Intersect(const double origin[3], const double direction
       const double p[3] = { direction[1] * e2[2] - direction[2] * e2[1],
         direction[2] * e2[0] - direction[0] * e2[2], direction[0] * e2[1] - direction[1] * e2[0] };
       const double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
-      if (det == 0.0)
+      if (det == 0.0 || orientation * det > 0.0) // det > 0: met counter-clockwise
       {
         continue;
       }
@@ -414,6 +423,12 @@ bool vtkIceTriangleBVH::Intersect(const double origin[3], const double direction
       for (int a = 0; a < 3; ++a)
       {
         normal[a] = (1.0 - u - v) * tri[12 + a] + u * tri[16 + a] + v * tri[20 + a];
+      }
+      if (faceNormal)
+      {
+        faceNormal[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        faceNormal[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        faceNormal[2] = e1[0] * e2[1] - e1[1] * e2[0];
       }
     }
   };

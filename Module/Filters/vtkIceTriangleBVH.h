@@ -5,7 +5,8 @@
  * @brief   A bounding volume hierarchy of an ice surface's triangles, laid out for a shader
  *          (for the project's modules: not installed).
  *
- * Build() takes the surface's polygons and triangle strips (polygons split into fans) with point
+ * Build() takes the surface's polygons and triangle strips (polygons split into fans, every
+ * triangle in its cell's order of corners: a strip's every other one turned) with point
  * normals and makes a binary tree of axis-aligned boxes down to at most LeafSize triangles, each
  * split by the binned surface-area heuristic (12 planes per axis; the median of the centroids'
  * longest axis where it finds none, and from depth MaximumDepth - 24 on, so the depth stays within
@@ -60,10 +61,14 @@ public:
 
   /**
    * The nearest triangle the ray origin + t direction meets with t in (tMin, tMax), as the shader
-   * finds it: true with t and the interpolated (unnormalised) normal there.
+   * finds it: true with t and the interpolated (unnormalised) normal there; where faceNormal is
+   * given, also the triangle's own normal (unnormalised, by its corners' order). For a ray
+   * inside the surface, `orientation` skips the triangles it meets from outside: 1 where every
+   * triangle is counter-clockwise seen from outside, -1 where every one is clockwise, 0 (none
+   * skipped) where that is not known.
    */
   bool Intersect(const double origin[3], const double direction[3], double tMin, double tMax,
-    double& t, double normal[3]) const;
+    double& t, double normal[3], double faceNormal[3] = nullptr, int orientation = 0) const;
 
 protected:
   vtkIceTriangleBVH() = default;

@@ -606,6 +606,8 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
     core ? static_cast<float>(vtkIceInteriorLook::CoreDensity(this->IceProperty->GetMilkiness()))
          : 0.0f);
   program->SetUniform3f("iceTraceCoreColour", coreColour);
+  this->CheckInputClosure();
+  program->SetUniformf("iceTraceOrientation", static_cast<float>(this->InputOrientation));
 
   vtkTextureObject* active[2];
   this->Trace->Activate(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act,
@@ -673,6 +675,13 @@ void vtkIceMapper::CheckInputClosure()
       vtkIceSurfaceCheck::CheckClosure(this->PreparedInput);
     this->InputOpenEdges = closure.OpenEdges;
     this->InputClosedOutward = closure.IsClosedOutward() && !this->InputFlat;
+    // Which way every triangle faces, where they agree (open edges allowed: the trace's rays
+    // start inside all the same).
+    const bool consistent = closure.MisorientedEdges == 0 && !this->InputFlat;
+    this->InputOrientation = !consistent ? 0
+      : closure.InwardComponents == 0 && closure.OutwardComponents > 0 ? 1
+      : closure.OutwardComponents == 0 && closure.InwardComponents > 0 ? -1
+                                                                        : 0;
   }
 }
 

@@ -383,6 +383,7 @@ protected:
   vtkIdType InputOpenEdges = -1; // -1: not checked yet
   bool InputDrawnBefore = false; // in the main scene, since the input changed
   bool InputClosedOutward = false;
+  int InputOrientation = 0; // vtkIceTriangleBVH::Intersect's orientation of the input's triangles
 
   bool CullHiddenBackfaces = true;
   bool LastDrawCulledBackfaces = false;

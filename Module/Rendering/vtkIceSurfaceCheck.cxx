@@ -368,6 +368,7 @@ Closure CheckClosureOf(vtkPolyData* merged)
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     closure.InwardComponents += root(i) == i && volume[i] < 0.0 ? 1 : 0;
+    closure.OutwardComponents += root(i) == i && volume[i] > 0.0 ? 1 : 0;
   }
   return closure;
 }

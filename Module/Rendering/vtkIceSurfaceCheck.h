@@ -43,6 +43,7 @@ struct Closure
   vtkIdType OpenEdges = 0;
   vtkIdType MisorientedEdges = 0;
   vtkIdType InwardComponents = 0;
+  vtkIdType OutwardComponents = 0; // positive signed volume
   bool IsClosedOutward() const
   {
     return OpenEdges == 0 && MisorientedEdges == 0 && InwardComponents == 0;

@@ -16,6 +16,17 @@ vec3 iceReflect(vec3 e, vec3 n)
   return e - 2.0 * dot(n, e) * n;
 }
 
+// A ray inside the ice reflected about an interpolated normal n (outward) can point out through
+// the flat triangle it reflects on (face: its outward unit normal): near grazing the two normals
+// differ by up to half the angle between neighbouring triangles. It would then meet the next
+// triangle at once, from outside (bright lines along the edges); it stays just inside instead.
+vec3 iceReflectInside(vec3 d, vec3 n, vec3 face)
+{
+  vec3 r = iceReflect(d, n);
+  float outward = dot(r, face) + 1.0e-3;
+  return outward > 0.0 ? normalize(r - outward * face) : r;
+}
+
 // Eq 2: refracted eye vector, eta = n_from / n_to. Where eq 2 has no real solution
 // (total internal reflection, only possible for eta > 1) the ray is reflected instead.
 vec3 iceRefract(vec3 e, vec3 n, float eta)

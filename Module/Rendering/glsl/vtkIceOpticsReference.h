@@ -29,6 +29,15 @@ inline Vec3 Reflect(const Vec3& e, const Vec3& n)
   return e - 2.0 * glm::dot(n, e) * n;
 }
 
+// iceReflectInside: reflected about the interpolated normal n, kept inside the flat triangle it
+// reflects on (face: its outward unit normal).
+inline Vec3 ReflectInside(const Vec3& d, const Vec3& n, const Vec3& face)
+{
+  const Vec3 r = Reflect(d, n);
+  const double outward = glm::dot(r, face) + 1.0e-3;
+  return outward > 0.0 ? glm::normalize(r - outward * face) : r;
+}
+
 // Eq 2: r_refr = eta e - (eta (n . e) + sqrt(1 - eta^2 (1 - (n . e)^2))) n; reflection where the
 // root is imaginary (total internal reflection).
 inline Vec3 Refract(const Vec3& e, const Vec3& n, double eta)
@@ -186,8 +195,8 @@ Vec3 ShadeWithDirection(const Vec3& e, const Vec3& nFront, const Vec3& refracted
 // The light traced through the ice (iceTracedRefraction of vtkIceTraceFS.glsl): refracted in at
 // `position`, then at each of up to maxBounces hits from inside Fresnel's share reflects on and the
 // rest refracts out; at the last hit all that is left leaves, as does a ray that meets nothing.
-// `hit(origin, direction, tMin, t, n)` is the nearest triangle (vtkIceTriangleBVH::Intersect, in
-// world coordinates here); tMin the shader's epsilon.
+// `hit(origin, direction, tMin, t, n, face)` is the nearest triangle (vtkIceTriangleBVH::Intersect,
+// in world coordinates here) with its interpolated and its own normal; tMin the shader's epsilon.
 // The milky core on the traced path (iceTraceCore* of vtkIceTraceFS.glsl), here in world
 // coordinates: density 0 is none.
 struct TracedCore
@@ -212,7 +221,8 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
   {
     double t;
     Vec3 n;
-    if (!hit(p, d, tMin, t, n))
+    Vec3 face;
+    if (!hit(p, d, tMin, t, n, face))
     {
       break;
     }
@@ -227,6 +237,8 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
     p += t * d;
     n = glm::normalize(n);
     n = glm::dot(n, d) < 0.0 ? -n : n;
+    face = glm::normalize(face);
+    face = glm::dot(face, n) < 0.0 ? -face : face;
     const Vec3 leaving = Refract(d, -n, 1.0 / eta);
     if (bounce == maxBounces)
     {
@@ -236,7 +248,7 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
     const double r = DielectricReflectance(glm::dot(d, n), 1.0 / eta);
     light += throughput * (1.0 - r) * environment(leaving);
     throughput *= r;
-    d = Reflect(d, n);
+    d = ReflectInside(d, n, face);
   }
   return light + throughput * environment(d);
 }

@@ -10,6 +10,13 @@ uniform samplerBuffer iceTraceTriangles;
 uniform mat4 iceTraceWCMC;      // world to the tree's (model) coordinates
 uniform int iceTraceMaxBounces; // hits followed inside the ice
 uniform float iceTraceEpsilon;  // in model units: how far a hit must lie from the ray's start
+// Which way the triangles face: 1 where all are counter-clockwise seen from outside, -1 where all
+// are clockwise, 0 where it is not known (vtkIceTriangleBVH::Intersect's orientation). A ray in
+// the ice only meets triangles from inside, so one met from outside is skipped where it is known.
+// The ray's start is not always inside: with multisampling, a pixel a triangle partly covers
+// takes the point of the triangle's plane at its centre, beyond the edge, outside the next
+// triangle, which the ray would meet at once (a grid of lines along the edges).
+uniform float iceTraceOrientation;
 // The milky core (vtkIceInteriorLook::CoreFrame, model coordinates) on the segments after the
 // first internal reflection: the screen-space interior shows it along the first segment, and
 // without it here a face whose light reflects totally inside would show no cloud at all.
@@ -59,9 +66,10 @@ vec2 iceTraceSlab(vec3 o, vec3 inv, vec3 low, vec3 high, float tMin, float tMax)
     min(tMax, min(leaving.x, min(leaving.y, leaving.z))));
 }
 
-// The triangles of the leaf `child` (its first texel) the ray meets before t: t and the
-// interpolated normal n (unnormalised) of the nearest.
-bool iceTraceLeaf(vec3 o, vec3 d, float tMin, vec4 child, vec4 count, inout float t, inout vec3 n)
+// The triangles of the leaf `child` (its first texel) the ray meets before t: t, the
+// interpolated normal n and the face's normal (both unnormalised) of the nearest.
+bool iceTraceLeaf(
+  vec3 o, vec3 d, float tMin, vec4 child, vec4 count, inout float t, inout vec3 n, inout vec3 face)
 {
   bool hit = false;
   int first = int(child.w);
@@ -74,7 +82,7 @@ bool iceTraceLeaf(vec3 o, vec3 d, float tMin, vec4 child, vec4 count, inout floa
     vec3 s = o - p0;
     vec3 p = cross(d, e2);
     float det = dot(e1, p);
-    if (det == 0.0)
+    if (det == 0.0 || iceTraceOrientation * det > 0.0) // det > 0: met counter-clockwise
     {
       continue;
     }
@@ -89,6 +97,7 @@ bool iceTraceLeaf(vec3 o, vec3 d, float tMin, vec4 child, vec4 count, inout floa
     }
     t = along;
     hit = true;
+    face = cross(e1, e2);
     n = (1.0 - u - v) * texelFetch(iceTraceTriangles, 6 * i + 3).xyz +
       u * texelFetch(iceTraceTriangles, 6 * i + 4).xyz +
       v * texelFetch(iceTraceTriangles, 6 * i + 5).xyz;
@@ -97,16 +106,18 @@ bool iceTraceLeaf(vec3 o, vec3 d, float tMin, vec4 child, vec4 count, inout floa
 }
 
 // The nearest triangle the ray o + t d (model coordinates) meets with tMin < t < tMax: true with
-// t and the normal interpolated there (unnormalised). A visit reads both children's boxes;
-// leaves are searched at once (a hit shortens the rest), nodes pushed the nearer last, each with
-// where the ray enters it, so one beyond the nearest hit is skipped unread.
-bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n)
+// t, the normal interpolated there and the triangle's own normal (both unnormalised). A visit
+// reads both children's boxes; leaves are searched at once (a hit shortens the rest), nodes pushed
+// the nearer last, each with where the ray enters it, so one beyond the nearest hit is skipped
+// unread.
+bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n, out vec3 face)
 {
   vec3 inv = vec3(d.x != 0.0 ? 1.0 / d.x : 1.0e30, d.y != 0.0 ? 1.0 / d.y : 1.0e30,
     d.z != 0.0 ? 1.0 / d.z : 1.0e30);
   bool hit = false;
   t = tMax;
   n = vec3(0.0);
+  face = vec3(0.0);
   int stack[48];
   float entries[48];
   int top = 1;
@@ -127,13 +138,13 @@ bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n
     vec2 a = iceTraceSlab(o, inv, lowA.xyz, highA.xyz, tMin, t);
     if (a.x <= a.y && highA.w < 0.0)
     {
-      hit = iceTraceLeaf(o, d, tMin, lowA, highA, t, n) || hit;
+      hit = iceTraceLeaf(o, d, tMin, lowA, highA, t, n, face) || hit;
       a = vec2(1.0, 0.0);
     }
     vec2 b = iceTraceSlab(o, inv, lowB.xyz, highB.xyz, tMin, t);
     if (b.x <= b.y && highB.w < 0.0)
     {
-      hit = iceTraceLeaf(o, d, tMin, lowB, highB, t, n) || hit;
+      hit = iceTraceLeaf(o, d, tMin, lowB, highB, t, n, face) || hit;
       b = vec2(1.0, 0.0);
     }
     bool enterA = a.x <= a.y && a.x < t;
@@ -175,8 +186,9 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
     vec3 dModel = linear * d;
     float t;
     vec3 nModel;
+    vec3 faceModel;
     if (!iceTraceHit((iceTraceWCMC * vec4(p, 1.0)).xyz, dModel,
-          iceTraceEpsilon / length(dModel), 1.0e30, t, nModel))
+          iceTraceEpsilon / length(dModel), 1.0e30, t, nModel, faceModel))
     {
       break;
     }
@@ -194,6 +206,8 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
     // Normals go to the world by the inverse transpose: n * M is transpose(M) n.
     vec3 n = normalize(nModel * linear);
     n = dot(n, d) < 0.0 ? -n : n; // outward, along the leaving ray
+    vec3 face = normalize(faceModel * linear);
+    face = dot(face, n) < 0.0 ? -face : face;
     vec3 leaving = iceRefract(d, -n, 1.0 / eta);
     float spreadLeaving = iceRefractionSpread(dot(d, n), dot(leaving, n), 1.0 / eta);
     float spread2Leaving = spread2 + spreadLeaving * spreadLeaving;
@@ -206,7 +220,7 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
     vec2 rt = iceTracedInterface(dot(d, n), 1.0 / eta);
     light += throughput * rt.y * iceTracedEnvironmentColor(leaving, spread2Leaving);
     throughput *= rt.x;
-    d = iceReflect(d, n);
+    d = iceReflectInside(d, n, face);
     spread2 += 4.0; // the mirror inside turns the ray by twice its facet's tilt
   }
   return light + throughput * iceTracedEnvironmentColor(d, spread2);
