@@ -97,7 +97,7 @@ def main(work, baseline=None):
     box.SetTexture(texture)
     plotter.add_actor(box)
     vtkice.pyvista.add_ice(plotter, pv.Sphere(radius=0.8, theta_resolution=64, phi_resolution=64),
-                           NumberOfCracks=0, NumberOfAirPlanes=0, BumpStrength=0.0)
+                           preset=None, NumberOfCracks=0, NumberOfAirPlanes=0, BumpStrength=0.0)
     plotter.camera_position = [(1.6, 0.5, 3.4), (0.0, 0.0, 0.0), (0.0, 1.0, 0.0)]
     shot = os.path.join(work, "ready-wheel.png")
     plotter.screenshot(shot)

@@ -13,7 +13,8 @@ import vtkice.pyvista  # noqa: E402
 
 SIZE = (320, 240)
 CAMERA = [(1.6, 0.5, 3.4), (0.0, 0.0, 0.0), (0.0, 1.0, 0.0)]
-CLEAN = dict(NumberOfCracks=0, NumberOfAirPlanes=0, BumpStrength=0.0)
+# The library's look without cracks, air or bumps: the tests of the plotter's mechanics.
+CLEAN = dict(preset=None, NumberOfCracks=0, NumberOfAirPlanes=0, BumpStrength=0.0)
 # Module-level meshes: PyVista names an actor after its mesh's address, which a freed temporary
 # mesh would hand on to the next one (replacing its actor).
 CONE = pv.Cone(center=(-0.6, 0.0, -1.5), direction=(0, 1, 0), radius=0.6, height=1.5)
@@ -168,6 +169,61 @@ def test_unknown_look_parameter_names_the_known_ones():
     plotter = pv.Plotter(off_screen=True, window_size=SIZE)
     with pytest.raises(TypeError, match="NumberOfCracks"):
         vtkice.pyvista.add_ice(plotter, pv.Sphere(), NumberOfCrackz=3)
+    plotter.close()
+
+
+def _look_values(actor, plotter):
+    """Every setting of the ice's look (vtkIceLook's table, camera settings left out) on the
+    actor's mapper, as text."""
+    Look = vtkice.vtkIceLook
+    icepass = vtkice.pyvista.ice_pass(plotter)
+    cube_maps = vtkice.vtkIceCubeMapPass()
+    camera = plotter.renderer.GetActiveCamera()
+    return {Look.GetName(i): Look.GetValue(actor.GetMapper(), icepass, cube_maps, camera,
+                                           Look.GetName(i))
+            for i in range(Look.GetNumberOfSettings()) if not Look.IsCameraSetting(i)}
+
+
+def test_ice_starts_from_ice_renders_default_look():
+    """add_ice's ice is ice-render's default (the ice-cube preset), not the library's paper look:
+    every setting the preset names has the preset's value."""
+    plotter = pv.Plotter(off_screen=True, window_size=SIZE)
+    values = _look_values(vtkice.pyvista.add_ice(plotter, pv.Sphere()), plotter)
+    named = {}
+    with open(vtkice.preset_path(vtkice.DEFAULT_PRESET)) as preset:
+        for line in preset:
+            line = line.split("#")[0].strip()
+            if line:
+                key, value = (part.strip() for part in line.split("="))
+                named[key] = value
+    assert vtkice.DEFAULT_PRESET == "ice-cube" and len(named) > 8
+    for key, value in named.items():
+        got = values[key]
+        if key in ("fresnel", "two-sided-method"):
+            assert got == value, key
+        else:
+            assert [float(v) for v in got.split(",")] == pytest.approx(
+                [float(v) for v in value.split(",")]), key
+    plotter.close()
+
+
+def test_no_preset_keeps_the_librarys_defaults():
+    plotter = pv.Plotter(off_screen=True, window_size=SIZE)
+    values = _look_values(vtkice.pyvista.add_ice(plotter, pv.Sphere(), preset=None), plotter)
+    Look = vtkice.vtkIceLook
+    for i in range(Look.GetNumberOfSettings()):
+        name = Look.GetName(i)
+        if name in values and not name.startswith(("cube-map", "tone-mapping", "exposure")):
+            assert values[name] == Look.GetDefault(i), name
+    plotter.close()
+
+
+def test_unknown_preset_names_the_shipped_ones_and_changes_nothing():
+    plotter = pv.Plotter(off_screen=True, window_size=SIZE)
+    with pytest.raises(ValueError, match="ice-cube"):
+        vtkice.pyvista.add_ice(plotter, pv.Sphere(), preset="ice-cubes")
+    assert getattr(plotter.renderer, "_vtkice_pass", None) is None
+    assert len(plotter.renderer.actors) == 0
     plotter.close()
 
 

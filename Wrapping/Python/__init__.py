@@ -27,6 +27,29 @@ from .LookIce import *  # noqa: F401,F403,E402
 from .RenderingIcePaper import *  # noqa: F401,F403,E402
 
 
+# The look ice-render starts from, and vtkice.pyvista.add_ice: natural ice (the library's own
+# defaults are the paper's look).
+DEFAULT_PRESET = "ice-cube"
+
+
+def presets():
+    """The names of the shipped looks (ice-render's presets): clear, ice-cube, lake, ..."""
+    import os
+
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "presets")
+    return sorted(f[:-4] for f in os.listdir(folder) if f.endswith(".ice"))
+
+
+def preset_path(name):
+    """The file of the shipped look `name` (see presets()), for vtkIceLook.ApplyPreset; a
+    ValueError lists the names where there is no such look."""
+    import os
+
+    if name not in presets():
+        raise ValueError("no preset %r (the shipped ones are %s)" % (name, ", ".join(presets())))
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "presets", name + ".ice")
+
+
 def use_backend(name="auto"):
     """Chooses how every render window created from now on draws: "x" (an X display), "egl" or
     "osmesa" (no X server needed), or "auto" (X when DISPLAY opens, else EGL, else OSMesa), as

@@ -24,8 +24,8 @@ from vtkmodules.vtkCommonCore import vtkObject as _vtkObject
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper as _vtkOpenGLPolyDataMapper
 from vtkmodules.vtkRenderingOpenGL2 import vtkToneMappingPass as _vtkToneMappingPass
 
-from . import (vtkIceCubeMapPass, vtkIceLook, vtkIceMapper, vtkIcePaperInterior, vtkIcePass,
-               vtkIceProperty)
+from . import (DEFAULT_PRESET, preset_path, vtkIceCubeMapPass, vtkIceLook, vtkIceMapper,
+               vtkIcePaperInterior, vtkIcePass, vtkIceProperty)
 
 __all__ = ["add_ice", "ice_pass", "tone_mapping"]
 
@@ -134,14 +134,18 @@ def tone_mapping(plotter, curve="filmic", exposure=0.0):
     return curves
 
 
-def add_ice(plotter, mesh, name=None, pickable=True, dynamic_environment=False, **look):
+def add_ice(plotter, mesh, name=None, pickable=True, dynamic_environment=False,
+            preset=DEFAULT_PRESET, **look):
     """Adds `mesh` to `plotter` as ice and returns its actor (a pyvista.Actor).
 
-    `mesh` is any PyVista or VTK data set (its surface is used); `look` sets the ice's
-    parameters by name, those of the look on the mapper's vtkIceProperty and those of the drawing
-    on the mapper, e.g. ``NumberOfCracks=4`` or ``number_of_cracks=4``,
-    ``IceColor=(0.8, 0.9, 1.0)``, ``TwoSidedRefraction=False``. An unknown name raises TypeError
-    listing the parameters. The ice reflects and refracts the renderer's environment texture
+    `mesh` is any PyVista or VTK data set (its surface is used). The ice starts from the look
+    `preset`, one of vtkice.presets(): by default "ice-cube", natural ice as ice-render draws it
+    (the light traced through it, a cloudy core of small bubbles); None keeps the library's
+    defaults (the paper's look). `look` then sets the ice's parameters by name, those of the look
+    on the mapper's vtkIceProperty and those of the drawing on the mapper, e.g.
+    ``NumberOfCracks=4`` or ``number_of_cracks=4``, ``IceColor=(0.8, 0.9, 1.0)``,
+    ``TwoSidedRefraction=False``. An unknown name raises TypeError listing the parameters, an
+    unknown preset ValueError listing the shipped ones; the plotter is then left as it was. The ice reflects and refracts the renderer's environment texture
     (``plotter.renderer.SetEnvironmentTexture``); with ``dynamic_environment=True`` the plotter's
     ice pass also renders a cube map of the scene around each ice (a vtkIceCubeMapPass), so the
     plotter's other objects show in the ice.
@@ -151,15 +155,24 @@ def add_ice(plotter, mesh, name=None, pickable=True, dynamic_environment=False, 
         data = data.extract_surface()
     mapper = vtkIceMapper()
     mapper.SetInputData(data)
-    for key, value in look.items():
-        setter = _setter(mapper, key)
+    # Names checked before the plotter changes.
+    setters = [(_setter(mapper, key), value) for key, value in look.items()]
+    path = preset_path(preset) if preset is not None else None
+    icepass = ice_pass(plotter)
+    if path is not None:
+        # A shipped look names the ice's settings only; a scratch cube-map pass stands for one
+        # the plotter may not have.
+        problem = vtkIceLook.ApplyPreset(mapper, icepass, vtkIceCubeMapPass(),
+                                         plotter.renderer.GetActiveCamera(), path)
+        if problem:
+            raise ValueError("vtkice.pyvista.add_ice: " + problem)
+    for setter, value in setters:
         if isinstance(value, (tuple, list)):
             setter(*value)
         else:
             setter(value)
     actor = _pv.Actor(mapper=mapper)
     actor.SetPickable(bool(pickable))
-    icepass = ice_pass(plotter)
     if dynamic_environment and icepass.GetCubeMapPass() is None:
         icepass.SetCubeMapPass(vtkIceCubeMapPass())
     plotter.add_actor(actor, name=name, pickable=pickable)
