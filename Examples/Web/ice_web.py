@@ -68,7 +68,8 @@ class IceWebApp:
         self.uploaded = None
         state = self.server.state
         state.update({"model": "teapot", "models": list(ice_web_scene.MODELS),
-                      "preset": None, "presets": ice_web_scene.presets(), "ice": True,
+                      "preset": vtkice.DEFAULT_PRESET, "presets": ice_web_scene.presets(),
+                      "ice": True,
                       "message": "", "message_type": "info", "upload": None})
         for setting in self.settings:
             state[state_key(setting["name"])] = state_value(

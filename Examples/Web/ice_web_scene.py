@@ -28,7 +28,6 @@ from vtkmodules.vtkRenderingOpenGL2 import vtkToneMappingPass
 import vtkice
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-PRESETS = os.path.join(HERE, "..", "Presets")
 MODELS = ("teapot", "block", "sphere")
 UPLOAD_TYPES = (".stl", ".ply", ".obj")
 Look = vtkice.vtkIceLook
@@ -50,7 +49,8 @@ def look_settings():
 
 
 def presets():
-    return sorted(f[:-4] for f in os.listdir(PRESETS) if f.endswith(".ice"))
+    """The shipped looks by name (those of ice-render, in the vtkice package)."""
+    return vtkice.presets()
 
 
 def _mapper(source):
@@ -121,7 +121,9 @@ def read_model_file(path):
 class IceScene:
     """A render window with the ice, its plain-surface twin and the landscape."""
 
-    def __init__(self, size=(800, 600)):
+    def __init__(self, size=(800, 600), preset=vtkice.DEFAULT_PRESET):
+        """The scene with the look `preset` (ice-render's default, natural ice; None: the
+        library's defaults)."""
         self.window = vtkRenderWindow()
         self.window.SetOffScreenRendering(True)
         self.window.SetSize(*size)
@@ -148,6 +150,10 @@ class IceScene:
         camera.SetPosition(2.1, 0.9, 3.9)  # ice-render's view of its default scene
         camera.SetViewAngle(32)
         self.renderer.ResetCameraClippingRange()
+        if preset is not None:
+            problem = self.apply_preset(preset)
+            if problem:
+                raise ValueError(problem)
 
     def _add_sky(self):
         self.sky = vtkice.vtkIceCubeMapSource()
@@ -239,7 +245,7 @@ class IceScene:
             self.apply(setting["name"], setting["default"])
         problem = Look.ApplyPreset(self.mapper, self.pass_, self.cube_maps,
                                    self.renderer.GetActiveCamera(), self.tone_mapping,
-                                   os.path.join(PRESETS, name + ".ice"))
+                                   vtkice.preset_path(name))
         self._place_tone_mapping()
         return problem
 

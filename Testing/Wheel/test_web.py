@@ -140,11 +140,15 @@ def test_ice_differs_from_a_plain_surface(page):
     wait_for(lambda: shown(view_pixels(page)), "the first image")
     ice = settled(page)
     page.find_element(By.CSS_SELECTOR, ".ice-switch input").click()
-    plain = changed_from(page, ice)
+    # Settled after the change: the view shows each picture at interactive quality first, and
+    # the traced look's full-quality frame can arrive after a second.
+    changed_from(page, ice)
+    plain = settled(page)
     difference = np.abs(centre(ice) - centre(plain)).max(axis=2)
     assert (difference > 40).mean() > 0.05, "the ice's pixels must differ from a plain surface"
     page.find_element(By.CSS_SELECTOR, ".ice-switch input").click()
     changed_from(page, plain)
+    settled(page)
 
 
 def test_slider_changes_the_image(page):

@@ -67,6 +67,19 @@ def test_screenshot_is_a_png_of_the_ice():
     assert (np.abs(ice - plain).max(axis=2) > 40).mean() > 0.02
 
 
+def test_scene_opens_on_ice_renders_default_look():
+    """The viewer starts from ice-render's default look (the ice-cube preset), not the library's
+    paper look; preset=None keeps the library's defaults."""
+    Look = vtkice.vtkIceLook
+    natural = ice_web_scene.IceScene(size=(64, 48))
+    library = ice_web_scene.IceScene(size=(64, 48), preset=None)
+    for name, value in (("bounces", "8"), ("two-sided-method", "exit-point"), ("bubbles", "1"),
+                        ("milky-core", "0.5"), ("air", "0"), ("cracks", "0")):
+        assert natural.value(name) == value, name
+        assert library.value(name) == Look.GetDefault(Look.FindSetting(name)), name
+    assert library.value("bounces") == "1" and library.value("air") == "19"
+
+
 def test_preset_replaces_the_look():
     scene = ice_web_scene.IceScene(size=(64, 48))
     assert "glacier" in ice_web_scene.presets()
