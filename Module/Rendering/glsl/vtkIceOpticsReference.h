@@ -207,6 +207,9 @@ struct TracedCore
   Vec3 Colour = Vec3(1.0);
 };
 
+// iceTraceCutoff: less light than this left inside leaves along the reflected ray.
+constexpr double TraceCutoff = 0.005;
+
 template <typename Hit, typename Environment>
 Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, int maxBounces,
   double tMin, const Material& material, const Hit& hit, const Environment& environment,
@@ -249,6 +252,10 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
     light += throughput * (1.0 - r) * environment(leaving);
     throughput *= r;
     d = ReflectInside(d, n, face);
+    if (std::max({ throughput.r, throughput.g, throughput.b }) < TraceCutoff)
+    {
+      break;
+    }
   }
   return light + throughput * environment(d);
 }

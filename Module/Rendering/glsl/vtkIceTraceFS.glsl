@@ -165,11 +165,18 @@ bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n
   return hit;
 }
 
+// Where less than this share of the light is left inside (after a reflection that is not total,
+// usually a few percent), it leaves along the reflected ray: on curved ice most rays then stop at
+// their first way out instead of following the last percent through every bounce. The CPU's is
+// vtkIceOpticsReference::TraceCutoff.
+const float iceTraceCutoff = 0.005;
+
 // The light the eye vector e brings back through the ice it enters at positionWC (front normal
 // nFront, eta = n_air / n_ice): refracted in, then at each of up to iceTraceMaxBounces hits from
 // inside Fresnel's share (iceTracedInterface) reflects on and the rest refracts out into
 // the environment; at the last hit all that is left leaves (refracted, or reflected where it
-// cannot), as does a ray that meets no triangle. Absorbed along every segment.
+// cannot), as does a ray that meets no triangle or one with less than iceTraceCutoff left.
+// Absorbed along every segment.
 vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
 {
   vec3 d = iceRefract(e, nFront, eta);
@@ -222,6 +229,10 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
     throughput *= rt.x;
     d = iceReflectInside(d, n, face);
     spread2 += 4.0; // the mirror inside turns the ray by twice its facet's tilt
+    if (max(throughput.r, max(throughput.g, throughput.b)) < iceTraceCutoff)
+    {
+      break;
+    }
   }
   return light + throughput * iceTracedEnvironmentColor(d, spread2);
 }
