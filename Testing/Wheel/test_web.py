@@ -134,6 +134,11 @@ def settled(driver):
 def test_first_image_arrives(page):
     assert shown(wait_for(lambda: [p for p in [view_pixels(page)] if shown(p)],
                           "the first image")[0])
+    # Documentation/web.png: VTKICE_WEB_PICTURE=PATH saves the page once its picture settles.
+    picture = os.environ.get("VTKICE_WEB_PICTURE")
+    if picture:
+        settled(page)
+        page.save_screenshot(picture)
 
 
 def test_ice_differs_from_a_plain_surface(page):
