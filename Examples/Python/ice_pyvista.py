@@ -37,17 +37,17 @@ def main(out="ice_pyvista.png"):
     # The ice: any mesh. It starts from ice-render's natural look (the "ice-cube" preset:
     # Fresnel's equations, faintly blue where thick, the light traced through it so a flat face
     # mirrors the others inside, a barely frosted surface, a cloudy core of small bubbles); the
-    # look's parameters by name change it. Thicker blue here, for these small objects.
+    # look's parameters by name change it.
     sphere = pv.Sphere(radius=0.8, center=(0.9, 0.0, 0.0), theta_resolution=96,
                        phi_resolution=96)
     # dynamic_environment: the cone and the floor show in the ice, not only the sky. The sphere
-    # is clear, with two cracks and a few bubbles; the block keeps the preset's cloudy core.
-    vtkice.pyvista.add_ice(plotter, sphere, dynamic_environment=True, NumberOfCracks=2,
-                           MilkyCoreRadius=0.0, BubbleDensity=0.2, AttenuationDistance=0.8)
+    # has a smaller, fainter core than the block.
+    vtkice.pyvista.add_ice(plotter, sphere, dynamic_environment=True, MilkyCoreRadius=0.35,
+                           Milkiness=0.3)
     source = vtkice.vtkIceBlockSource()
     source.Update()
     block = pv.wrap(source.GetOutput()).scale(0.5).translate((-0.9, -0.4, 0.4))
-    vtkice.pyvista.add_ice(plotter, block, AttenuationDistance=0.8)
+    vtkice.pyvista.add_ice(plotter, block)
 
     plotter.camera_position = [(1.5, 1.4, 5.0), (0.0, -0.1, -0.3), (0.0, 1.0, 0.0)]
     plotter.screenshot(out)
