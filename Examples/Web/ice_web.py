@@ -119,7 +119,8 @@ class IceWebApp:
         self.update()
 
     def on_preset(self, preset, **_):
-        if not preset:
+        # The page's first state names the preset the scene opened on: not applied twice.
+        if not preset or preset == self.scene.preset:
             return
         problem = self.scene.apply_preset(preset)
         self.say(problem or "preset %s" % preset, "error" if problem else "info")

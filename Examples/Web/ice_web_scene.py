@@ -124,6 +124,7 @@ class IceScene:
     def __init__(self, size=(800, 600), preset=vtkice.DEFAULT_PRESET):
         """The scene with the look `preset` (ice-render's default, natural ice; None: the
         library's defaults)."""
+        self.preset = None  # the shipped look the scene is in, as apply_preset left it
         self.window = vtkRenderWindow()
         self.window.SetOffScreenRendering(True)
         self.window.SetSize(*size)
@@ -228,6 +229,7 @@ class IceScene:
         problem = Look.Apply(self.mapper, self.pass_, self.cube_maps,
                              self.renderer.GetActiveCamera(), self.tone_mapping, name, str(value))
         self._place_tone_mapping()
+        self.preset = None  # the look is no longer exactly a preset's
         return problem
 
     def _place_tone_mapping(self):
@@ -247,6 +249,7 @@ class IceScene:
                                    self.renderer.GetActiveCamera(), self.tone_mapping,
                                    vtkice.preset_path(name))
         self._place_tone_mapping()
+        self.preset = None if problem else name
         return problem
 
     def screenshot_png(self):

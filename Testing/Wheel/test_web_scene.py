@@ -78,6 +78,9 @@ def test_scene_opens_on_ice_renders_default_look():
         assert natural.value(name) == value, name
         assert library.value(name) == Look.GetDefault(Look.FindSetting(name)), name
     assert library.value("bounces") == "1" and library.value("air") == "19"
+    # The page's first state names that preset: the app does not apply it again.
+    assert natural.preset == "ice-cube" and library.preset is None
+    assert natural.apply("cracks", "3") == "" and natural.preset is None
 
 
 def test_preset_replaces_the_look():
