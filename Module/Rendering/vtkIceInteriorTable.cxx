@@ -5,6 +5,7 @@
 #include "vtkIceAirGeometry.h"
 #include "vtkIceBackToFront.h"
 #include "vtkIceCrackGeometry.h"
+#include "vtkIceCrackGrid.h"
 #include "vtkIceCrackSource.h"
 #include "vtkIceInteriorFS.h"
 #include "vtkIceInteriorLook.h"
@@ -36,6 +37,7 @@ const int OutlineSamples = 64; // as iceOutlineSamples
 const int RecordsPerRow = 16;  // as iceRecordsPerRow: 4 texels each, 64 texels a row
 const int BumpSize = 32;       // texels per repeat of the bump texture
 const int BumpCells = 8;       // noise cells per repeat
+const int GridRowTexels = 4096; // as iceCrackGridRowTexels
 
 // The rows of the inverse of `placement` (model to the record's own frame) into `record`.
 void StoreInverse(vtkTransform* placement, float* record)
@@ -134,7 +136,10 @@ std::vector<float> BumpGradients()
 }
 
 //------------------------------------------------------------------------------
-vtkIceInteriorTable::vtkIceInteriorTable() = default;
+vtkIceInteriorTable::vtkIceInteriorTable()
+  : Grid(vtkSmartPointer<vtkIceCrackGrid>::New())
+{
+}
 
 //------------------------------------------------------------------------------
 vtkIceInteriorTable::~vtkIceInteriorTable() = default;
@@ -219,6 +224,7 @@ void vtkIceInteriorTable::Place(vtkPolyData* ice, vtkIceProperty* look, const Pl
   }
   this->CrackRecords.assign(16 * static_cast<size_t>(this->Cracks), 0.0f);
   this->CrackCorners.assign(24 * static_cast<size_t>(this->Cracks), 0.0);
+  std::vector<vtkIceCrackGrid::Sheet> sheets;
   this->AirCorners.assign(24 * static_cast<size_t>(this->AirPlanes), 0.0);
   for (int i = 0; i < this->Cracks; ++i)
   {
@@ -238,7 +244,14 @@ void vtkIceInteriorTable::Place(vtkPolyData* ice, vtkIceProperty* look, const Pl
     const double z[2] = { std::min(0.0, a) + std::min(0.0, b),
       std::max(0.0, a) + std::max(0.0, b) };
     StoreCorners(where, r, z, &this->CrackCorners[24 * static_cast<size_t>(i)]);
+    vtkIceCrackGrid::Sheet sheet;
+    std::copy(record, record + 12, sheet.ModelToSheet);
+    sheet.Bowl[0] = record[12];
+    sheet.Bowl[1] = record[13];
+    sheet.Radius = r;
+    sheets.push_back(sheet);
   }
+  this->Grid->Build(sheets, bounds);
   this->AirRecords.assign(16 * static_cast<size_t>(this->AirPlanes), 0.0f);
   this->AirCenters.assign(3 * static_cast<size_t>(this->AirPlanes), 0.0);
   for (int i = 0; i < this->AirPlanes; ++i)
@@ -290,6 +303,10 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
     this->Table->SetContext(window);
     this->Table->SetMinificationFilter(vtkTextureObject::Nearest);
     this->Table->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->GridLists = vtkSmartPointer<vtkTextureObject>::New();
+    this->GridLists->SetContext(window);
+    this->GridLists->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->GridLists->SetMagnificationFilter(vtkTextureObject::Nearest);
     this->Uploaded = false;
   }
   if (!this->Uploaded)
@@ -311,6 +328,12 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
       std::copy(record, record + 16, planes + 16 * k);
     }
     this->Table->Create2DFromRaw(OutlineSamples, rows, 4, VTK_FLOAT, texels.data());
+    // The grid's offsets and lists in rows of GridRowTexels (within every GPU's width limit).
+    std::vector<float> lists = this->Grid->GetTexels();
+    const int gridRows =
+      std::max(1, static_cast<int>((lists.size() + GridRowTexels - 1) / GridRowTexels));
+    lists.resize(static_cast<size_t>(gridRows) * GridRowTexels, 0.0f);
+    this->GridLists->Create2DFromRaw(GridRowTexels, gridRows, 1, VTK_FLOAT, lists.data());
     this->Uploaded = true;
   }
   if (!this->Bump || this->Bump->GetContext() != window)
@@ -326,6 +349,7 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
     this->Bump->Create3DFromRaw(BumpSize, BumpSize, BumpSize, 3, VTK_FLOAT, gradients.data());
   }
   this->Table->Activate();
+  this->GridLists->Activate();
   this->Bump->Activate();
   this->ActiveAtlas = this->AirPlanes > 0 ? atlas : nullptr;
   if (this->ActiveAtlas)
@@ -350,6 +374,16 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
       ? static_cast<vtkOpenGLTexture*>(this->ActiveAtlas)->GetTextureObject()->GetTextureUnit()
       : this->Table->GetTextureUnit());
   program->SetUniformi("iceCrackCount", this->Cracks);
+  program->SetUniformi("iceCrackGrid", this->GridLists->GetTextureUnit());
+  // VTK's programs have no ivec3 setter: the cell counts as floats.
+  const int* dimensions = this->Grid->GetDimensions();
+  const float size[3] = { static_cast<float>(dimensions[0]), static_cast<float>(dimensions[1]),
+    static_cast<float>(dimensions[2]) };
+  program->SetUniform3f("iceCrackGridSize", size);
+  float origin[3];
+  std::copy(this->Grid->GetOrigin(), this->Grid->GetOrigin() + 3, origin);
+  program->SetUniform3f("iceCrackGridOrigin", origin);
+  program->SetUniformf("iceCrackGridCell", static_cast<float>(this->Grid->GetCellSize()));
   program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->AirPlanes : 0);
   program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Look->GetCrackIntensity()));
   program->SetUniformf("iceCrackReflection", static_cast<float>(this->Look->GetCrackReflection()));
@@ -397,6 +431,7 @@ void vtkIceInteriorTable::Finish(vtkRenderer* renderer)
   if (this->Table)
   {
     this->Table->Deactivate();
+    this->GridLists->Deactivate();
     this->Bump->Deactivate();
   }
 }
@@ -408,6 +443,8 @@ void vtkIceInteriorTable::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Table->ReleaseGraphicsResources(window);
     this->Table = nullptr;
+    this->GridLists->ReleaseGraphicsResources(window);
+    this->GridLists = nullptr;
   }
   if (this->Bump)
   {

@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 // The interior of one vtkIceMapper as the screen-space step reads it: its cracks and air planes
-// as records in a float texture (placement and shape, the same as the paper passes' geometry), a
-// periodic noise-gradient texture for the cracks' bumps, and the shader code that intersects the
-// view ray with them (glsl/vtkIceInteriorFS.glsl).
+// as records in a float texture (placement and shape, the same as the paper passes' geometry), the
+// cracks' grid (vtkIceCrackGrid) in another, a periodic noise-gradient texture for the cracks'
+// bumps, and the shader code that intersects the view ray with them (glsl/vtkIceInteriorFS.glsl).
 #ifndef vtkIceInteriorTable_h
 #define vtkIceInteriorTable_h
 
@@ -13,6 +13,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkIceCrackGrid;
 class vtkIceProperty;
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
@@ -91,6 +92,8 @@ private:
   bool Uploaded = false;
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> Bump;
+  vtkSmartPointer<vtkIceCrackGrid> Grid;
+  vtkSmartPointer<vtkTextureObject> GridLists;
   vtkTexture* ActiveAtlas = nullptr;
 
   vtkIceInteriorTable(const vtkIceInteriorTable&) = delete;

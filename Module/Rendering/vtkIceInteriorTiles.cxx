@@ -118,12 +118,8 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
   std::vector<std::array<int, 4>> reach;
   std::vector<int> listed;
   vtkMatrix4x4* modelToWorld = actor->GetMatrix();
-  for (int position = 0; position < records; ++position)
+  for (int position = cracks; position < std::min(records, cracks + air); ++position)
   {
-    if (position >= cracks + air)
-    {
-      break;
-    }
     double corners[24];
     interior.GetCorners(position, corners);
     for (int c = 0; c < 8; ++c)
@@ -151,11 +147,9 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
   };
 
   // Count first (the stride is the longest list), then fill.
-  std::vector<int> crackCounts(static_cast<size_t>(tiles), 0);
-  std::vector<int> airCounts(static_cast<size_t>(tiles), 0);
+  std::vector<int> counts(static_cast<size_t>(tiles), 0);
   for (size_t r = 0; r < reach.size(); ++r)
   {
-    std::vector<int>& counts = listed[r] < cracks ? crackCounts : airCounts;
     for (int ty = reach[r][1]; ty < reach[r][3]; ++ty)
     {
       for (int tx = reach[r][0]; tx < reach[r][2]; ++tx)
@@ -168,10 +162,10 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
   this->Entries = 0;
   for (int t = 0; t < tiles; ++t)
   {
-    longest = std::max(longest, crackCounts[t] + airCounts[t]);
-    this->Entries += crackCounts[t] + airCounts[t];
+    longest = std::max(longest, counts[t]);
+    this->Entries += counts[t];
   }
-  this->Stride = 2 + longest;
+  this->Stride = 1 + longest;
   // The lists one after the other, in rows of RowTexels (within every GPU's width limit).
   const size_t total = static_cast<size_t>(tiles) * this->Stride;
   const int rows = static_cast<int>((total + RowTexels - 1) / RowTexels);
@@ -179,8 +173,7 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
   std::vector<int> filled(static_cast<size_t>(tiles), 0);
   for (int t = 0; t < tiles; ++t)
   {
-    this->Texels[static_cast<size_t>(t) * this->Stride] = static_cast<float>(crackCounts[t]);
-    this->Texels[static_cast<size_t>(t) * this->Stride + 1] = static_cast<float>(airCounts[t]);
+    this->Texels[static_cast<size_t>(t) * this->Stride] = static_cast<float>(counts[t]);
   }
   // Records in the table's order, so each tile's air stays back to front.
   for (size_t r = 0; r < reach.size(); ++r)
@@ -192,7 +185,7 @@ void vtkIceInteriorTiles::Update(vtkRenderer* renderer, vtkActor* actor,
         const size_t t = static_cast<size_t>(ty) * this->TilesAcross + tx;
         if (reaches(r, tx, ty))
         {
-          this->Texels[t * this->Stride + 2 + filled[t]++] = static_cast<float>(listed[r]);
+          this->Texels[t * this->Stride + 1 + filled[t]++] = static_cast<float>(listed[r]);
         }
       }
     }

@@ -1,11 +1,11 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// Which of an ice prop's cracks and air planes each screen tile's rays can meet, for the
-// screen-space interior (vtkIceScreenInterior): the box around each record's sheet or plane is
-// projected with the camera, and each tile of 16 x 16 pixels lists the records whose projection
-// reaches it, in the table's order (cracks, then planes back to front). A pixel's ray then
-// intersects only its tile's records: a crack or plane no ray of a tile can reach costs that
-// tile nothing. Built on the CPU for every draw (the camera and the ice move), uploaded as one
+// Which of an ice prop's air planes each screen tile's rays can meet, for the screen-space
+// interior (vtkIceScreenInterior): the box around each plane is projected with the camera, and
+// each tile of 16 x 16 pixels lists the planes whose projection reaches it, back to front (the
+// table's order). A pixel's ray then intersects only its tile's planes: a plane no ray of a tile
+// can reach costs that tile nothing. (The cracks, about the ice's size, reach nearly every tile:
+// a grid in the ice's own space culls them, vtkIceCrackGrid.) Built on the CPU for every draw (the camera and the ice move), uploaded as one
 // float texture. Inside the module.
 #ifndef vtkIceInteriorTiles_h
 #define vtkIceInteriorTiles_h

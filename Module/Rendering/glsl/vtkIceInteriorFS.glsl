@@ -2,15 +2,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // The ice's cracks and air along the view ray from a front-surface point to the nearest back face
-// (its view depth is in the back-face target's alpha), intersected with every crack sheet and air
-// plane of vtkIceInteriorTable's table: the air is composited over the ice colour back to
-// front, the cracks' highlights are added on top, as the paper's passes composite them. Evaluated
+// (its view depth is in the back-face target's alpha), intersected with the crack sheets and air
+// planes of vtkIceInteriorTable's table (the cracks of the grid's cells the ray crosses, the
+// planes of the pixel's tile): the air is composited over the ice colour back to front, the
+// cracks' highlights are added on top, as the paper's passes composite them. Evaluated
 // once per pixel by the screen-space step (vtkIceScreenInterior), which hands the surface its
 // result.
 uniform sampler2D iceInteriorTable; // R: crack outlines (rows 0-2); then 4 texels per record
 uniform sampler3D iceInteriorBump;  // periodic noise gradient, 8 noise cells per repeat
 uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
 uniform int iceCrackCount;          // records 0 .. iceCrackCount - 1
+uniform sampler2D iceCrackGrid;     // R: each cell's list's start, then the lists (vtkIceCrackGrid)
+uniform vec3 iceCrackGridSize;      // cells along x, y, z
+uniform vec3 iceCrackGridOrigin;    // model coordinates of cell (0, 0, 0)'s lower corner
+uniform float iceCrackGridCell;     // the cells' side, model units
 uniform int iceAirCount;            // the next records, back to front for this camera
 uniform float iceCrackIntensity;
 uniform float iceCrackReflection; // the cracks as sheets: 0 none
@@ -32,12 +37,17 @@ vec2 icePixelFootprint = vec2(0.0);
 
 const int iceOutlineSamples = 64; // per crack model, over the full turn
 const int iceRecordsPerRow = 16;
+const int iceCrackGridRowTexels = 4096;
 
-// The records this pixel's ray may meet: every one, or (the screen-space interior) its tile's
+int iceCrackGridEntry(int at)
+{
+  return int(texelFetch(iceCrackGrid, ivec2(at % iceCrackGridRowTexels,
+    at / iceCrackGridRowTexels), 0).r);
+}
+
+// The air planes this pixel's ray may meet: every one, or (the screen-space interior) its tile's
 // list (vtkIceInteriorTiles).
 #ifndef ICE_INTERIOR_TILES
-int iceCracksHere() { return iceCrackCount; }
-int iceCrackRecord(int j) { return j; }
 int iceAirHere() { return iceAirCount; }
 int iceAirRecord(int j) { return iceCrackCount + j; }
 #endif
@@ -110,6 +120,39 @@ float iceBubbleProfile(vec3 u)
   return exp(-dot(a, a));
 }
 
+// A walk through the cells of a grid along the ray p + s v (grid units: cells of side 1), front
+// to back: `cell` is the current cell, `next` the s at which the ray leaves it across x, y and z.
+struct IceGridWalk
+{
+  vec3 cell;
+  vec3 direction;
+  vec3 delta;
+  vec3 next;
+};
+
+IceGridWalk iceGridWalk(vec3 p, vec3 v, vec3 cell)
+{
+  IceGridWalk walk;
+  walk.cell = cell;
+  walk.direction = sign(v);
+  walk.delta = 1.0 / max(abs(v), vec3(1.0e-9));
+  // A selection (mix by a bvec3): mix by a float would compute 1e30 + (x - 1e30) * 1 = 0.
+  walk.next = mix(vec3(1.0e30),
+    (walk.direction * (cell - p) + max(walk.direction, 0.0)) * walk.delta,
+    notEqual(walk.direction, vec3(0.0)));
+  return walk;
+}
+
+// Into the next cell; returns the s at which the ray entered it.
+float iceGridStep(inout IceGridWalk walk)
+{
+  float s = min(walk.next.x, min(walk.next.y, walk.next.z));
+  vec3 crossed = vec3(lessThanEqual(walk.next, vec3(s)));
+  walk.cell += crossed * walk.direction;
+  walk.next += crossed * walk.delta;
+  return s;
+}
+
 //ICE::Functions
 // The interior as what it does to the ice colour c behind it: c * keep + add, kept as
 // vec4(add, keep), since every layer mixes c towards its own colour by a scalar or adds light.
@@ -156,16 +199,11 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
   float modelPerWorld = length(d);
   vec3 p = o / iceBubbleCell; // in cells
   vec3 v = d / iceBubbleCell;
-  vec3 cell = floor(p); // the cell's integer coordinates, as floats
-  vec3 direction = sign(v);
-  vec3 delta = 1.0 / max(abs(v), vec3(1.0e-9));
-  // A selection (mix by a bvec3): mix by a float would compute 1e30 + (x - 1e30) * 1 = 0.
-  vec3 next = mix(vec3(1.0e30), (direction * (cell - p) + max(direction, 0.0)) * delta,
-    notEqual(direction, vec3(0.0)));
+  IceGridWalk walk = iceGridWalk(p, v, floor(p));
   float sCell = 0.0;
   for (int i = 0; i < 160 && sCell < sBack && layer.a > 0.02; ++i)
   {
-    ivec3 c = ivec3(cell);
+    ivec3 c = ivec3(walk.cell);
     vec3 column = iceCellRandom(ivec3(c.x, -7919, c.z));
     vec3 r = iceCellRandom(c);
     vec3 more = iceCellRandom(c + ivec3(40503, 0, 0));
@@ -210,11 +248,7 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
       layer.rgb += layer.a * a * ICE_CORE_COLOUR;
       layer.a *= 1.0 - a;
     }
-    float sNext = min(next.x, min(next.y, next.z));
-    vec3 crossed = vec3(lessThanEqual(next, vec3(sNext)));
-    cell += crossed * direction;
-    next += crossed * delta;
-    sCell = sNext;
+    sCell = iceGridStep(walk);
   }
   return layer;
 }
@@ -288,41 +322,64 @@ vec4 iceInteriorAlong(
   float nearest = sBack;
   int nearestRecord = -1;
   float nearestEdge = 0.0;
-  int cracksHere = iceCracksHere();
-  for (int j = 0; j < cracksHere; ++j)
+  // The grid's cells along the ray, front to back (as the bubbles' cells): each cell's cracks,
+  // until a crack nearer than the cell's far side is found (any nearer one crosses a cell
+  // visited already, which lists it).
+  vec3 gridP = (o - iceCrackGridOrigin) / iceCrackGridCell;
+  ivec3 gridSize = ivec3(iceCrackGridSize + 0.5);
+  IceGridWalk walk = iceGridWalk(gridP, d / iceCrackGridCell,
+    clamp(floor(gridP), vec3(0.0), vec3(gridSize - 1)));
+  float sCell = 0.0;
+  int cells = iceCrackCount > 0 ? gridSize.x + gridSize.y + gridSize.z : 0;
+  for (int i = 0; i < cells && sCell < nearest; ++i)
   {
-    // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
-    // shallow sheet at most once inside the outline in practice: the nearer root in the ice.
-    int record = iceCrackRecord(j);
-    IceLocalRay ray = iceLocalRay(record, o, d);
-    float a = ray.shape.x;
-    float b = ray.shape.y;
-    vec3 p = ray.origin;
-    vec3 v = ray.direction;
-    float qa = -(a * v.x * v.x + b * v.y * v.y);
-    float qb = v.z - 2.0 * (a * p.x * v.x + b * p.y * v.y);
-    float qc = p.z - a * p.x * p.x - b * p.y * p.y;
-    float discriminant = qb * qb - 4.0 * qa * qc;
-    float q = -0.5 * (qb + (qb < 0.0 ? -1.0 : 1.0) * sqrt(max(discriminant, 0.0)));
-    bool quadratic = abs(qa) > 1.0e-6 * abs(qb);
-    float s0 = quadratic ? q / qa : -qc / qb;
-    float s1 = quadratic ? qc / q : -1.0;
-    bool in0 = s0 > 0.0 && s0 < sBack;
-    bool in1 = s1 > 0.0 && s1 < sBack;
-    float s = in0 && (!in1 || s0 < s1) ? s0 : s1;
-    if (discriminant < 0.0 || !(in0 || in1) || s >= nearest)
+    ivec3 c = ivec3(walk.cell);
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, gridSize)))
     {
-      continue;
+      break;
     }
-    vec3 hit = p + s * v;
-    float outline = iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x));
-    if (length(hit.xy) > outline)
+    int cell = (c.z * gridSize.y + c.y) * gridSize.x + c.x;
+    int last = iceCrackGridEntry(cell + 1);
+    for (int k = iceCrackGridEntry(cell); k < last; ++k)
     {
-      continue;
+      // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
+      // shallow sheet at most once inside the outline in practice: the nearer root in the ice.
+      int record = iceCrackGridEntry(k);
+      if (record == nearestRecord)
+      {
+        continue; // met in an earlier cell
+      }
+      IceLocalRay ray = iceLocalRay(record, o, d);
+      float a = ray.shape.x;
+      float b = ray.shape.y;
+      vec3 p = ray.origin;
+      vec3 v = ray.direction;
+      float qa = -(a * v.x * v.x + b * v.y * v.y);
+      float qb = v.z - 2.0 * (a * p.x * v.x + b * p.y * v.y);
+      float qc = p.z - a * p.x * p.x - b * p.y * p.y;
+      float discriminant = qb * qb - 4.0 * qa * qc;
+      float q = -0.5 * (qb + (qb < 0.0 ? -1.0 : 1.0) * sqrt(max(discriminant, 0.0)));
+      bool quadratic = abs(qa) > 1.0e-6 * abs(qb);
+      float s0 = quadratic ? q / qa : -qc / qb;
+      float s1 = quadratic ? qc / q : -1.0;
+      bool in0 = s0 > 0.0 && s0 < sBack;
+      bool in1 = s1 > 0.0 && s1 < sBack;
+      float s = in0 && (!in1 || s0 < s1) ? s0 : s1;
+      if (discriminant < 0.0 || !(in0 || in1) || s >= nearest)
+      {
+        continue;
+      }
+      vec3 hit = p + s * v;
+      float outline = iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x));
+      if (length(hit.xy) > outline)
+      {
+        continue;
+      }
+      nearest = s;
+      nearestRecord = record;
+      nearestEdge = length(hit.xy) / max(outline, 1.0e-6);
     }
-    nearest = s;
-    nearestRecord = record;
-    nearestEdge = length(hit.xy) / max(outline, 1.0e-6);
+    sCell = iceGridStep(walk);
   }
   bool crackSeen = nearestRecord >= 0;
   vec3 nearestNormal = vec3(0.0);

@@ -11,8 +11,8 @@ uniform sampler2D iceScreenInterior;
         gl_FragData[0].rgb * iceScreenInteriorResult.a + iceScreenInteriorResult.rgb;
     }
 //ICE::Tiles
-// The records of this pixel's tile (vtkIceInteriorTiles): the lists one after the other, each
-// its crack count, its plane count, then their records' positions in the table.
+// The air planes of this pixel's tile (vtkIceInteriorTiles): the lists one after the other, each
+// its count, then the planes' records' positions in the table.
 #define ICE_INTERIOR_TILES
 uniform sampler2D iceTileLists;
 uniform ivec2 iceTileOrigin; // pixel of tile (0, 0)
@@ -27,10 +27,8 @@ int iceTileEntry(int i)
   int at = iceTileStart + i;
   return int(texelFetch(iceTileLists, ivec2(at % iceTileRowTexels, at / iceTileRowTexels), 0).r);
 }
-int iceCracksHere() { return iceTileEntry(0); }
-int iceCrackRecord(int j) { return iceTileEntry(2 + j); }
-int iceAirHere() { return iceTileEntry(1); }
-int iceAirRecord(int j) { return iceTileEntry(2 + iceTileEntry(0) + j); }
+int iceAirHere() { return iceTileEntry(0); }
+int iceAirRecord(int j) { return iceTileEntry(1 + j); }
 //ICE::Dec
 // The screen-space interior (vtkIceScreenInterior): one ice prop's interior once per pixel, from
 // its own nearest front face (the view depth in the depth interval's R, its normal in B and A;
