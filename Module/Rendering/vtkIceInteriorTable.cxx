@@ -7,6 +7,7 @@
 #include "vtkIceCrackGeometry.h"
 #include "vtkIceCrackGrid.h"
 #include "vtkIceCrackSource.h"
+#include "vtkIceCracksFS.h"
 #include "vtkIceInteriorFS.h"
 #include "vtkIceInteriorLook.h"
 #include "vtkIceInteriorLookFS.h"
@@ -148,6 +149,7 @@ vtkIceInteriorTable::~vtkIceInteriorTable() = default;
 std::string vtkIceInteriorTable::Declarations()
 {
   return vtkIceInteriorLook::Defines() + vtkIceShaderSections::Get(vtkIceInteriorLookFS, "Dec") +
+    vtkIceShaderSections::Get(vtkIceCracksFS, "Dec") +
     vtkIceShaderSections::Get(vtkIceInteriorFS, "Dec");
 }
 

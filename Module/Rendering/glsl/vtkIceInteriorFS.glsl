@@ -8,14 +8,8 @@
 // cracks' highlights are added on top, as the paper's passes composite them. Evaluated
 // once per pixel by the screen-space step (vtkIceScreenInterior), which hands the surface its
 // result.
-uniform sampler2D iceInteriorTable; // R: crack outlines (rows 0-2); then 4 texels per record
 uniform sampler3D iceInteriorBump;  // periodic noise gradient, 8 noise cells per repeat
 uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
-uniform int iceCrackCount;          // records 0 .. iceCrackCount - 1
-uniform sampler2D iceCrackGrid;     // R: each cell's list's start, then the lists (vtkIceCrackGrid)
-uniform vec3 iceCrackGridSize;      // cells along x, y, z
-uniform vec3 iceCrackGridOrigin;    // model coordinates of cell (0, 0, 0)'s lower corner
-uniform float iceCrackGridCell;     // the cells' side, model units
 uniform int iceAirCount;            // the next records, back to front for this camera
 uniform float iceCrackIntensity;
 uniform float iceCrackReflection; // the cracks as sheets: 0 none
@@ -35,62 +29,12 @@ uniform float iceBubbleFade;         // how much a bubble fades per model unit o
 // of the pixel instead of flickering.
 vec2 icePixelFootprint = vec2(0.0);
 
-const int iceOutlineSamples = 64; // per crack model, over the full turn
-const int iceRecordsPerRow = 16;
-const int iceCrackGridRowTexels = 4096;
-
-int iceCrackGridEntry(int at)
-{
-  return int(texelFetch(iceCrackGrid, ivec2(at % iceCrackGridRowTexels,
-    at / iceCrackGridRowTexels), 0).r);
-}
-
 // The air planes this pixel's ray may meet: every one, or (the screen-space interior) its tile's
 // list (vtkIceInteriorTiles).
 #ifndef ICE_INTERIOR_TILES
 int iceAirHere() { return iceAirCount; }
 int iceAirRecord(int j) { return iceCrackCount + j; }
 #endif
-
-vec4 iceInteriorTexel(int record, int texel)
-{
-  return texelFetch(iceInteriorTable,
-    ivec2(4 * (record % iceRecordsPerRow) + texel, 3 + record / iceRecordsPerRow), 0);
-}
-
-// A record's model-to-local transform (three rows) applied to the ray o + s d.
-struct IceLocalRay
-{
-  vec3 origin;
-  vec3 direction;
-  vec4 row0;
-  vec4 row1;
-  vec4 row2;
-  vec4 shape;
-};
-
-IceLocalRay iceLocalRay(int record, vec3 o, vec3 d)
-{
-  IceLocalRay ray;
-  ray.row0 = iceInteriorTexel(record, 0);
-  ray.row1 = iceInteriorTexel(record, 1);
-  ray.row2 = iceInteriorTexel(record, 2);
-  ray.shape = iceInteriorTexel(record, 3);
-  ray.origin = vec3(dot(ray.row0.xyz, o) + ray.row0.w, dot(ray.row1.xyz, o) + ray.row1.w,
-    dot(ray.row2.xyz, o) + ray.row2.w);
-  ray.direction = vec3(dot(ray.row0.xyz, d), dot(ray.row1.xyz, d), dot(ray.row2.xyz, d));
-  return ray;
-}
-
-// Outline radius of crack model `model` at `angle` (radians), linear between the samples.
-float iceCrackOutline(int model, float angle)
-{
-  float x = fract(angle / 6.2831853) * float(iceOutlineSamples);
-  int i = int(x) % iceOutlineSamples;
-  float r0 = texelFetch(iceInteriorTable, ivec2(i, model), 0).r;
-  float r1 = texelFetch(iceInteriorTable, ivec2((i + 1) % iceOutlineSamples, model), 0).r;
-  return mix(r0, r1, fract(x));
-}
 
 // One well-mixed 32-bit integer of another (Chris Wellons' lowbias32 constants).
 uint iceMix(uint x)
@@ -118,39 +62,6 @@ float iceBubbleProfile(vec3 u)
 {
   vec3 a = u * u;
   return exp(-dot(a, a));
-}
-
-// A walk through the cells of a grid along the ray p + s v (grid units: cells of side 1), front
-// to back: `cell` is the current cell, `next` the s at which the ray leaves it across x, y and z.
-struct IceGridWalk
-{
-  vec3 cell;
-  vec3 direction;
-  vec3 delta;
-  vec3 next;
-};
-
-IceGridWalk iceGridWalk(vec3 p, vec3 v, vec3 cell)
-{
-  IceGridWalk walk;
-  walk.cell = cell;
-  walk.direction = sign(v);
-  walk.delta = 1.0 / max(abs(v), vec3(1.0e-9));
-  // A selection (mix by a bvec3): mix by a float would compute 1e30 + (x - 1e30) * 1 = 0.
-  walk.next = mix(vec3(1.0e30),
-    (walk.direction * (cell - p) + max(walk.direction, 0.0)) * walk.delta,
-    notEqual(walk.direction, vec3(0.0)));
-  return walk;
-}
-
-// Into the next cell; returns the s at which the ray entered it.
-float iceGridStep(inout IceGridWalk walk)
-{
-  float s = min(walk.next.x, min(walk.next.y, walk.next.z));
-  vec3 crossed = vec3(lessThanEqual(walk.next, vec3(s)));
-  walk.cell += crossed * walk.direction;
-  walk.next += crossed * walk.delta;
-  return s;
 }
 
 //ICE::Functions
@@ -313,74 +224,14 @@ vec4 iceInteriorAlong(
   vec4 bubbles = iceBubbles(o, dCloud, sBack, coreOrigin, coreDirection, viewDepth, alongCloud);
   t = vec4(bubbles.rgb + bubbles.a * t.rgb, bubbles.a * t.a);
 
-  // Cracks: the nearest the ray crosses inside its outline. A crack the ray misses (no crossing in
-  // the ice, or outside the outline) or meets behind the nearest so far is skipped before its
-  // outline is read; only the nearest is shaded, once: its mirror hides what lies behind it where
-  // it reflects totally, and seen square on a gap reflects a few percent, so the cracks behind
-  // it would add little. A GPU skips what no fragment of a warp needs; llvmpipe runs it masked.
+  // Cracks: only the nearest is shaded, once: its mirror hides what lies behind it where it
+  // reflects totally, and seen square on a gap reflects a few percent, so the cracks behind it
+  // would add little.
   vec3 highlights = vec3(0.0);
-  float nearest = sBack;
-  int nearestRecord = -1;
-  float nearestEdge = 0.0;
-  // The grid's cells along the ray, front to back (as the bubbles' cells): each cell's cracks,
-  // until a crack nearer than the cell's far side is found (any nearer one crosses a cell
-  // visited already, which lists it).
-  vec3 gridP = (o - iceCrackGridOrigin) / iceCrackGridCell;
-  ivec3 gridSize = ivec3(iceCrackGridSize + 0.5);
-  IceGridWalk walk = iceGridWalk(gridP, d / iceCrackGridCell,
-    clamp(floor(gridP), vec3(0.0), vec3(gridSize - 1)));
-  float sCell = 0.0;
-  int cells = iceCrackCount > 0 ? gridSize.x + gridSize.y + gridSize.z : 0;
-  for (int i = 0; i < cells && sCell < nearest; ++i)
-  {
-    ivec3 c = ivec3(walk.cell);
-    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, gridSize)))
-    {
-      break;
-    }
-    int cell = (c.z * gridSize.y + c.y) * gridSize.x + c.x;
-    int last = iceCrackGridEntry(cell + 1);
-    for (int k = iceCrackGridEntry(cell); k < last; ++k)
-    {
-      // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
-      // shallow sheet at most once inside the outline in practice: the nearer root in the ice.
-      int record = iceCrackGridEntry(k);
-      if (record == nearestRecord)
-      {
-        continue; // met in an earlier cell
-      }
-      IceLocalRay ray = iceLocalRay(record, o, d);
-      float a = ray.shape.x;
-      float b = ray.shape.y;
-      vec3 p = ray.origin;
-      vec3 v = ray.direction;
-      float qa = -(a * v.x * v.x + b * v.y * v.y);
-      float qb = v.z - 2.0 * (a * p.x * v.x + b * p.y * v.y);
-      float qc = p.z - a * p.x * p.x - b * p.y * p.y;
-      float discriminant = qb * qb - 4.0 * qa * qc;
-      float q = -0.5 * (qb + (qb < 0.0 ? -1.0 : 1.0) * sqrt(max(discriminant, 0.0)));
-      bool quadratic = abs(qa) > 1.0e-6 * abs(qb);
-      float s0 = quadratic ? q / qa : -qc / qb;
-      float s1 = quadratic ? qc / q : -1.0;
-      bool in0 = s0 > 0.0 && s0 < sBack;
-      bool in1 = s1 > 0.0 && s1 < sBack;
-      float s = in0 && (!in1 || s0 < s1) ? s0 : s1;
-      if (discriminant < 0.0 || !(in0 || in1) || s >= nearest)
-      {
-        continue;
-      }
-      vec3 hit = p + s * v;
-      float outline = iceCrackOutline(int(ray.shape.z), atan(hit.y, hit.x));
-      if (length(hit.xy) > outline)
-      {
-        continue;
-      }
-      nearest = s;
-      nearestRecord = record;
-      nearestEdge = length(hit.xy) / max(outline, 1.0e-6);
-    }
-    sCell = iceGridStep(walk);
-  }
+  float nearest;
+  int nearestRecord;
+  float nearestEdge;
+  iceNearestCrack(o, d, sBack, nearest, nearestRecord, nearestEdge);
   bool crackSeen = nearestRecord >= 0;
   vec3 nearestNormal = vec3(0.0);
   if (crackSeen)
@@ -388,11 +239,7 @@ vec4 iceInteriorAlong(
     // The sheet's normal (gradient of z - a x^2 - b y^2) back in model, then world space,
     // tilted by the noise fixed to the model (as the paper passes' crack shader, precomputed),
     // facing the viewer.
-    IceLocalRay ray = iceLocalRay(nearestRecord, o, d);
-    vec3 hit = ray.origin + nearest * ray.direction;
-    vec3 g = vec3(-2.0 * ray.shape.x * hit.x, -2.0 * ray.shape.y * hit.y, 1.0);
-    vec3 n = normalize(
-      iceNormalMCWCMatrix * (g.x * ray.row0.xyz + g.y * ray.row1.xyz + g.z * ray.row2.xyz));
+    vec3 n = normalize(iceNormalMCWCMatrix * iceCrackNormal(nearestRecord, o, d, nearest));
     vec3 sheetNormal = dot(n, e) > 0.0 ? -n : n;
     vec3 gradient = iceNormalMCWCMatrix *
       textureLod(iceInteriorBump, (o + nearest * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;
