@@ -4,9 +4,8 @@
 
 #include "vtkIceAirGeometry.h"
 #include "vtkIceBackToFront.h"
-#include "vtkIceCrackGeometry.h"
 #include "vtkIceCrackGrid.h"
-#include "vtkIceCrackSource.h"
+#include "vtkIceCrackTable.h"
 #include "vtkIceCracksFS.h"
 #include "vtkIceInteriorFS.h"
 #include "vtkIceInteriorLook.h"
@@ -34,7 +33,7 @@
 
 namespace
 {
-const int OutlineSamples = 64; // as iceOutlineSamples
+const int OutlineSamples = vtkIceCrackTable::OutlineSamples;
 const int RecordsPerRow = 16;  // as iceRecordsPerRow: 4 texels each, 64 texels a row
 const int BumpSize = 32;       // texels per repeat of the bump texture
 const int BumpCells = 8;       // noise cells per repeat
@@ -138,7 +137,8 @@ std::vector<float> BumpGradients()
 
 //------------------------------------------------------------------------------
 vtkIceInteriorTable::vtkIceInteriorTable()
-  : Grid(vtkSmartPointer<vtkIceCrackGrid>::New())
+  : CrackTable(vtkSmartPointer<vtkIceCrackTable>::New())
+  , Grid(vtkSmartPointer<vtkIceCrackGrid>::New())
 {
 }
 
@@ -212,48 +212,9 @@ void vtkIceInteriorTable::Place(vtkPolyData* ice, vtkIceProperty* look, const Pl
   this->Uploaded = false;
   const double* bounds = placement.Bounds;
 
-  // The three models' outlines and curvatures, as vtkIceCrackGeometry picks them.
-  this->Outlines.assign(3 * OutlineSamples, 0.0f);
-  vtkIceCrackSource::Shape shapes[3];
-  for (int m = 0; m < 3; ++m)
-  {
-    shapes[m] = vtkIceCrackSource::GetShape(vtkIceCrackGeometry::ModelSeed(this->CrackSeed, m));
-    for (int a = 0; a < OutlineSamples; ++a)
-    {
-      this->Outlines[m * OutlineSamples + a] =
-        static_cast<float>(shapes[m].OutlineRadius(2.0 * vtkMath::Pi() * a / OutlineSamples));
-    }
-  }
-  this->CrackRecords.assign(16 * static_cast<size_t>(this->Cracks), 0.0f);
-  this->CrackCorners.assign(24 * static_cast<size_t>(this->Cracks), 0.0);
-  std::vector<vtkIceCrackGrid::Sheet> sheets;
+  this->CrackTable->Build(this->CrackSeed, this->Cracks, bounds);
+  this->Grid->Build(this->CrackTable->GetSheets(), bounds);
   this->AirCorners.assign(24 * static_cast<size_t>(this->AirPlanes), 0.0);
-  for (int i = 0; i < this->Cracks; ++i)
-  {
-    vtkNew<vtkTransform> where;
-    vtkIceCrackGeometry::Placement(this->CrackSeed, i, bounds, where);
-    float* record = &this->CrackRecords[16 * static_cast<size_t>(i)];
-    StoreInverse(where, record);
-    const vtkIceCrackSource::Shape& shape = shapes[i % 3];
-    record[12] = static_cast<float>(shape.Bowl + shape.Saddle);
-    record[13] = static_cast<float>(shape.Bowl - shape.Saddle);
-    record[14] = static_cast<float>(i % 3);
-    // The box around the sheet z = a x^2 + b y^2 inside its outline, in the crack's frame.
-    const float* outline = &this->Outlines[static_cast<size_t>(i % 3) * OutlineSamples];
-    const double r = *std::max_element(outline, outline + OutlineSamples);
-    const double a = record[12] * r * r;
-    const double b = record[13] * r * r;
-    const double z[2] = { std::min(0.0, a) + std::min(0.0, b),
-      std::max(0.0, a) + std::max(0.0, b) };
-    StoreCorners(where, r, z, &this->CrackCorners[24 * static_cast<size_t>(i)]);
-    vtkIceCrackGrid::Sheet sheet;
-    std::copy(record, record + 12, sheet.ModelToSheet);
-    sheet.Bowl[0] = record[12];
-    sheet.Bowl[1] = record[13];
-    sheet.Radius = r;
-    sheets.push_back(sheet);
-  }
-  this->Grid->Build(sheets, bounds);
   this->AirRecords.assign(16 * static_cast<size_t>(this->AirPlanes), 0.0f);
   this->AirCenters.assign(3 * static_cast<size_t>(this->AirPlanes), 0.0);
   for (int i = 0; i < this->AirPlanes; ++i)
@@ -317,13 +278,15 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
     const int records = this->Cracks + this->AirPlanes;
     const int rows = 3 + std::max(1, (records + RecordsPerRow - 1) / RecordsPerRow);
     std::vector<float> texels(static_cast<size_t>(4 * OutlineSamples) * rows, 0.0f);
-    for (size_t i = 0; i < this->Outlines.size(); ++i)
+    const std::vector<float>& outlines = this->CrackTable->GetOutlines();
+    for (size_t i = 0; i < outlines.size(); ++i)
     {
-      texels[4 * i] = this->Outlines[i];
+      texels[4 * i] = outlines[i];
     }
     float* first = &texels[static_cast<size_t>(4 * OutlineSamples) * 3];
-    std::copy(this->CrackRecords.begin(), this->CrackRecords.end(), first);
-    float* planes = first + this->CrackRecords.size();
+    const std::vector<float>& cracks = this->CrackTable->GetRecords();
+    std::copy(cracks.begin(), cracks.end(), first);
+    float* planes = first + cracks.size();
     for (size_t k = 0; k < this->AirOrder.size(); ++k)
     {
       const float* record = &this->AirRecords[16 * static_cast<size_t>(this->AirOrder[k])];
@@ -459,8 +422,7 @@ void vtkIceInteriorTable::ReleaseGraphicsResources(vtkWindow* window)
 //------------------------------------------------------------------------------
 void vtkIceInteriorTable::GetCorners(int position, double corners[24]) const
 {
-  const double* from = position < this->Cracks
-    ? &this->CrackCorners[24 * static_cast<size_t>(position)]
-    : &this->AirCorners[24 * static_cast<size_t>(this->AirOrder[position - this->Cracks])];
+  const double* from =
+    &this->AirCorners[24 * static_cast<size_t>(this->AirOrder[position - this->Cracks])];
   std::copy(from, from + 24, corners);
 }

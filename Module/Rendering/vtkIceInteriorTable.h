@@ -14,6 +14,7 @@
 
 class vtkActor;
 class vtkIceCrackGrid;
+class vtkIceCrackTable;
 class vtkIceProperty;
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
@@ -59,7 +60,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
   // The records in the table's order (cracks, then air planes back to front) since the last
-  // Prepare, and the model-space box around record `position`'s sheet or plane (8 corners).
+  // Prepare, and the model-space box around air record `position`'s plane (8 corners).
   int GetNumberOfCracks() const { return this->Cracks; }
   // The air planes the shader reads (none without the bubble atlas), between Prepare and Finish.
   int GetNumberOfAirPlanes() const
@@ -82,16 +83,14 @@ private:
   vtkPolyData* PlacedFor = nullptr;
   vtkMTimeType PlacedTime = 0;
   bool Placed = false;
-  std::vector<float> Outlines;      // 3 models x 64 radii
-  std::vector<float> CrackRecords;  // 16 floats each
-  std::vector<float> AirRecords;    // 16 floats each, in placement order
-  std::vector<double> AirCenters;   // 3 each
-  std::vector<vtkIdType> AirOrder;  // back to front
-  std::vector<double> CrackCorners; // 24 each: the box around the sheet, model coordinates
-  std::vector<double> AirCorners;   // 24 each, in placement order
+  std::vector<float> AirRecords;   // 16 floats each, in placement order
+  std::vector<double> AirCenters;  // 3 each
+  std::vector<vtkIdType> AirOrder; // back to front
+  std::vector<double> AirCorners;  // 24 each, in placement order
   bool Uploaded = false;
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> Bump;
+  vtkSmartPointer<vtkIceCrackTable> CrackTable;
   vtkSmartPointer<vtkIceCrackGrid> Grid;
   vtkSmartPointer<vtkTextureObject> GridLists;
   vtkTexture* ActiveAtlas = nullptr;
