@@ -16,7 +16,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -247,19 +246,8 @@ void vtkIceInteriorTable::Order(const double eye[3])
 }
 
 //------------------------------------------------------------------------------
-void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice,
-  vtkIceProperty* look, const Placement& placement, vtkTexture* atlas)
+void vtkIceInteriorTable::Upload(vtkOpenGLRenderWindow* window)
 {
-  this->Place(ice, look, placement);
-  this->Look = look;
-  double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
-  renderer->GetActiveCamera()->GetPosition(eye);
-  vtkNew<vtkMatrix4x4> worldToModel;
-  vtkMatrix4x4::Invert(actor->GetMatrix(), worldToModel);
-  worldToModel->MultiplyPoint(eye, eye);
-  this->Order(eye);
-
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   if (!this->Table || this->Table->GetContext() != window)
   {
     this->Table = vtkSmartPointer<vtkTextureObject>::New();
@@ -301,6 +289,54 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
     this->GridLists->Create2DFromRaw(GridRowTexels, gridRows, 1, VTK_FLOAT, lists.data());
     this->Uploaded = true;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTable::PrepareCracks(vtkRenderer* renderer, vtkPolyData* ice,
+  vtkIceProperty* look, const Placement& placement, vtkShaderProgram* program,
+  vtkTextureObject* active[2])
+{
+  this->Place(ice, look, placement);
+  this->Upload(static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow()));
+  this->Table->Activate();
+  this->GridLists->Activate();
+  active[0] = this->Table;
+  active[1] = this->GridLists;
+  this->SetCrackUniforms(program);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTable::SetCrackUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformi("iceInteriorTable", this->Table->GetTextureUnit());
+  program->SetUniformi("iceCrackCount", this->Cracks);
+  program->SetUniformi("iceCrackGrid", this->GridLists->GetTextureUnit());
+  // VTK's programs have no ivec3 setter: the cell counts as floats.
+  const int* dimensions = this->Grid->GetDimensions();
+  const float size[3] = { static_cast<float>(dimensions[0]), static_cast<float>(dimensions[1]),
+    static_cast<float>(dimensions[2]) };
+  program->SetUniform3f("iceCrackGridSize", size);
+  float origin[3];
+  std::copy(this->Grid->GetOrigin(), this->Grid->GetOrigin() + 3, origin);
+  program->SetUniform3f("iceCrackGridOrigin", origin);
+  program->SetUniformf("iceCrackGridCell", static_cast<float>(this->Grid->GetCellSize()));
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice,
+  vtkIceProperty* look, const Placement& placement, vtkTexture* atlas)
+{
+  this->Place(ice, look, placement);
+  this->Look = look;
+  double eye[4] = { 0.0, 0.0, 0.0, 1.0 };
+  renderer->GetActiveCamera()->GetPosition(eye);
+  vtkNew<vtkMatrix4x4> worldToModel;
+  vtkMatrix4x4::Invert(actor->GetMatrix(), worldToModel);
+  worldToModel->MultiplyPoint(eye, eye);
+  this->Order(eye);
+
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
+  this->Upload(window);
   if (!this->Bump || this->Bump->GetContext() != window)
   {
     this->Bump = vtkSmartPointer<vtkTextureObject>::New();
@@ -330,7 +366,7 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
   {
     return;
   }
-  program->SetUniformi("iceInteriorTable", this->Table->GetTextureUnit());
+  this->SetCrackUniforms(program);
   program->SetUniformi("iceInteriorBump", this->Bump->GetTextureUnit());
   // Without air the atlas sampler still needs a 2D texture's unit: samplers of different types
   // on one unit (unit 0 by default) make the draw fail.
@@ -338,17 +374,6 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
     this->ActiveAtlas
       ? static_cast<vtkOpenGLTexture*>(this->ActiveAtlas)->GetTextureObject()->GetTextureUnit()
       : this->Table->GetTextureUnit());
-  program->SetUniformi("iceCrackCount", this->Cracks);
-  program->SetUniformi("iceCrackGrid", this->GridLists->GetTextureUnit());
-  // VTK's programs have no ivec3 setter: the cell counts as floats.
-  const int* dimensions = this->Grid->GetDimensions();
-  const float size[3] = { static_cast<float>(dimensions[0]), static_cast<float>(dimensions[1]),
-    static_cast<float>(dimensions[2]) };
-  program->SetUniform3f("iceCrackGridSize", size);
-  float origin[3];
-  std::copy(this->Grid->GetOrigin(), this->Grid->GetOrigin() + 3, origin);
-  program->SetUniform3f("iceCrackGridOrigin", origin);
-  program->SetUniformf("iceCrackGridCell", static_cast<float>(this->Grid->GetCellSize()));
   program->SetUniformi("iceAirCount", this->ActiveAtlas ? this->AirPlanes : 0);
   program->SetUniformf("iceCrackIntensity", static_cast<float>(this->Look->GetCrackIntensity()));
   program->SetUniformf("iceCrackReflection", static_cast<float>(this->Look->GetCrackReflection()));

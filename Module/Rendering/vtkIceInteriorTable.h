@@ -53,6 +53,11 @@ public:
   // (activated here too). `look` is read until Finish.
   void Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPolyData* ice, vtkIceProperty* look,
     const Placement& placement, vtkTexture* atlas);
+  // For the trace in the surface's program: the cracks of `look` placed as for the interior, the
+  // crack table and grid uploaded and activated (`active`: the caller deactivates them after the
+  // draw), their uniforms set on `program`.
+  void PrepareCracks(vtkRenderer* renderer, vtkPolyData* ice, vtkIceProperty* look,
+    const Placement& placement, vtkShaderProgram* program, vtkTextureObject* active[2]);
   // The interior's own uniforms (the screen-space step sets the matrices it reads).
   void SetUniforms(vtkShaderProgram* program);
   // After the draw: the textures deactivated.
@@ -73,6 +78,9 @@ public:
 private:
   void Place(vtkPolyData* ice, vtkIceProperty* look, const Placement& placement);
   void Order(const double eye[3]);
+  // The crack table and grid textures made for `window` and uploaded where anything changed.
+  void Upload(vtkOpenGLRenderWindow* window);
+  void SetCrackUniforms(vtkShaderProgram* program);
 
   Placement Where;
   vtkIceProperty* Look = nullptr; // between Prepare and Finish

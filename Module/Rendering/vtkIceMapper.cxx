@@ -23,6 +23,7 @@
 #include "vtkIceSurfaceFS.h"
 #include "vtkIceSurfaceVS.h"
 #include "vtkIceTraceFS.h"
+#include "vtkIceCracksFS.h"
 #include "vtkIceTraceTextures.h"
 #include "vtkIceTriangleBVH.h"
 #include "vtkIceTwoSidedFS.h"
@@ -53,7 +54,8 @@ enum ShaderParts
   NormalMapPart = 8,
   GlisteningPart = 16,
   RoughPart = 64,
-  TracePart = 128
+  TracePart = 128,
+  TraceCracksPart = 256
 };
 
 }
@@ -239,6 +241,10 @@ int vtkIceMapper::ShaderVariant() const
   if (this->TracesInterior())
   {
     variant |= TracePart;
+  }
+  if (this->TracesCracks())
+  {
+    variant |= TraceCracksPart;
   }
   return variant;
 }
@@ -472,8 +478,12 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   if (variant & TracePart)
   {
     // With the exit point's frame inputs only: it replaces that estimate's light.
+    // The cracks on the segments after a reflection inside: their search before the trace.
+    const std::string cracks = (variant & TraceCracksPart)
+      ? "#define ICE_TRACE_CRACKS\n" + vtkIceInteriorLook::Defines() + Get(vtkIceCracksFS, "Dec")
+      : std::string();
     parts.FragmentFunctions +=
-      "\n#ifdef ICE_FRAME_EXIT_POINT\n" + Get(vtkIceTraceFS, "Dec") + "\n#endif\n";
+      "\n#ifdef ICE_FRAME_EXIT_POINT\n" + cracks + Get(vtkIceTraceFS, "Dec") + "\n#endif\n";
     parts.Hooks.emplace_back("Refracted",
       "#ifdef ICE_FRAME_EXIT_POINT\n    if (iceTraceMaxBounces > 0)\n    {\n" +
         Get(vtkIceTraceFS, "Impl") + "    }\n#endif");
@@ -609,11 +619,19 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   this->CheckInputClosure();
   program->SetUniformf("iceTraceOrientation", static_cast<float>(this->InputOrientation));
 
-  vtkTextureObject* active[2];
+  vtkTextureObject* active[4] = { nullptr, nullptr, nullptr, nullptr };
   this->Trace->Activate(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act,
     this->MaxBounces, active);
+  if (program->IsUniformUsed("iceTraceCrackShare"))
+  {
+    this->PrepareTraceCracks(ren, program, active + 2);
+  }
   for (vtkTextureObject* texture : active)
   {
+    if (!texture)
+    {
+      continue;
+    }
     if (std::find(this->DrawTextures.begin(), this->DrawTextures.end(), texture) ==
       this->DrawTextures.end())
     {

@@ -338,6 +338,10 @@ protected:
   bool WarnedTraceUnusable = false;
   bool TracesInterior() const;
   void SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
+  // Whether the trace meets the cracks on its segments after a reflection inside (the
+  // screen-space interior shows them along the first), and their table and grid for it.
+  bool TracesCracks() const;
+  void PrepareTraceCracks(vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[2]);
   int InteriorMethod = InteriorScreenSpace;
   int DebugView = DebugOff;
   bool WarnWithoutEnvironment = true;

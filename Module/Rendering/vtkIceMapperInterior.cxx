@@ -13,6 +13,20 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 
+namespace
+{
+// What the interior's table needs beside the look and the bounds: the model's extent, the debug
+// view (the cracks alone or the air alone) and whether the input is flat.
+void PlaceInterior(vtkIceInteriorTable::Placement& placement, double extent, int view, bool flat)
+{
+  placement.Extent = extent;
+  placement.Debug = view == vtkIceMapper::DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
+    : view == vtkIceMapper::DebugAir                         ? vtkIceInteriorLook::DebugAir
+                                                             : vtkIceInteriorLook::DebugNone;
+  placement.Flat = flat;
+}
+}
+
 //------------------------------------------------------------------------------
 void vtkIceMapper::DrawPaperCracks(vtkRenderer* ren, vtkActor* actor, bool overlay)
 {
@@ -98,16 +112,34 @@ void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderPro
   {
     vtkIceInteriorTable::Placement placement;
     this->GetLookBounds(placement.Bounds);
-    placement.Extent = this->InputExtent();
-    placement.Debug = this->DebugView == DebugCracksClipped ? vtkIceInteriorLook::DebugCracks
-      : this->DebugView == DebugAir                         ? vtkIceInteriorLook::DebugAir
-                                                            : vtkIceInteriorLook::DebugNone;
-    placement.Flat = this->InputFlat;
+    PlaceInterior(placement, this->InputExtent(), this->DebugView, this->InputFlat);
     this->InteriorTable->Prepare(ren, act, this->PreparedInput, this->IceProperty, placement,
       this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
     this->InteriorPrepared = true;
   }
   this->InteriorTable->SetUniforms(program);
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceMapper::TracesCracks() const
+{
+  vtkIceProperty* look = this->IceProperty.Get();
+  return this->TracesInterior() && this->InteriorMethod == InteriorScreenSpace &&
+    this->DebugView == DebugOff && !this->InputFlat && look->GetNumberOfCracks() > 0 &&
+    look->GetCrackIntensity() * look->GetCrackReflection() > 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::PrepareTraceCracks(
+  vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[2])
+{
+  vtkIceInteriorTable::Placement placement;
+  this->GetLookBounds(placement.Bounds);
+  PlaceInterior(placement, this->InputExtent(), this->DebugView, this->InputFlat);
+  this->InteriorTable->PrepareCracks(
+    ren, this->PreparedInput, this->IceProperty, placement, program, active);
+  program->SetUniformf("iceTraceCrackShare",
+    static_cast<float>(this->IceProperty->GetCrackIntensity() * this->IceProperty->GetCrackReflection()));
 }
 
 //------------------------------------------------------------------------------

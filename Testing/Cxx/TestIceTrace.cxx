@@ -18,8 +18,13 @@
 //   multisampled  a coarse smooth sphere with 4 samples per pixel, 8 bounces: a pixel a triangle
 //              partly covers starts its ray on the triangle's plane beyond its edge, outside the
 //              next triangle; the ray met that one at once (a grid of lines along the edges)
+//   cracks     the cube with three cracks, 6 bounces: the trace meets them on the segments after
+//              each reflection inside (the CPU's cracks: vtkIceCrackTable, every sheet tested);
+//              pixels whose eye ray meets a crack are left out (the screen-space interior draws
+//              those, with its bump texture and the lights)
 #include "IceTestResources.h"
 #include "IceTestUtilities.h"
+#include "vtkIceCrackTable.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceInteriorLook.h"
 #include "vtkIceMapper.h"
@@ -149,6 +154,10 @@ struct Scene
   vtkNew<vtkIceTriangleBVH> WorldTree; // the surface in world coordinates, for the reference
   ref::Material Material;
   ref::TracedCore Core; // density 0: none
+  ref::TracedCracks Cracks; // share 0: none
+  // With cracks: the cracks in world coordinates (no actor transform), to leave out the pixels
+  // whose eye ray meets one.
+  vtkIceCrackTable* EyeCracks = nullptr;
   // Which way the surface's triangles face, as the mapper finds it (vtkIceTriangleBVH::Intersect).
   int Orientation = 1;
 
@@ -192,8 +201,9 @@ struct Scene
     return IceTest::Capture(this->Window);
   }
 
-  // The reference colour (0..255) of pixel (x, y); false where its ray misses the ice.
-  bool Reference(int x, int y, dvec3& colour) const
+  // The reference colour (0..255) of pixel (x, y); false where its ray misses the ice. `seen`
+  // (when given) says whether the eye ray meets a crack of EyeCracks inside the ice.
+  bool Reference(int x, int y, dvec3& colour, bool* seen = nullptr) const
   {
     double o[3];
     double d[3];
@@ -224,14 +234,24 @@ struct Scene
       return found;
     };
     const dvec3 refracted = ref::TracedRefraction(e, position, nFront,
-      this->Mapper->GetMaxBounces(), epsilon, this->Material, hit, environment, this->Core);
+      this->Mapper->GetMaxBounces(), epsilon, this->Material, hit, environment, this->Core,
+      this->Cracks);
     const dvec3 reflected = environment(ref::Reflect(e, nFront));
     const double f = ref::DielectricReflectance(glm::dot(e, nFront), this->Material.RefractionRatio);
     colour = refracted + (reflected - refracted) * f;
     double chord;
     dvec3 unused;
     dvec3 unusedFace;
-    if (this->Core.Density > 0.0 && hit(position, e, epsilon, chord, unused, unusedFace))
+    const bool through = hit(position, e, epsilon, chord, unused, unusedFace);
+    if (seen)
+    {
+      double s;
+      int record;
+      double edge;
+      const double p[3] = { position.x, position.y, position.z };
+      *seen = this->EyeCracks && through && this->EyeCracks->Nearest(p, &e.x, chord, s, record, edge);
+    }
+    if (this->Core.Density > 0.0 && through)
     {
       // The screen-space interior: the core along the refracted ray, over the eye ray's chord.
       const dvec3 inside = ref::Refract(e, nFront, this->Material.RefractionRatio);
@@ -252,11 +272,14 @@ struct Scene
     const int h = image.Height;
     std::vector<dvec3> colours(static_cast<size_t>(w) * h);
     std::vector<bool> on(colours.size(), false);
+    std::vector<bool> seen(colours.size(), false);
     for (int y = 0; y < h; ++y)
     {
       for (int x = 0; x < w; ++x)
       {
-        on[y * w + x] = this->Reference(x, y, colours[y * w + x]);
+        bool crack = false;
+        on[y * w + x] = this->Reference(x, y, colours[y * w + x], &crack);
+        seen[y * w + x] = crack;
       }
     }
     std::vector<double> errors;
@@ -269,7 +292,8 @@ struct Scene
         {
           for (int dx = -2; dx <= 2 && interior; ++dx)
           {
-            interior = on[(y + dy) * w + x + dx];
+            interior = on[(y + dy) * w + x + dx] &&
+              !(std::abs(dx) <= 1 && std::abs(dy) <= 1 && seen[(y + dy) * w + x + dx]);
           }
         }
         if (!interior)
@@ -367,6 +391,72 @@ bool Multisampled()
   return IceTest::ReportReference(name, scene.Compare(image), 10000) && ok;
 }
 
+bool Cracks()
+{
+  const double camera[3] = { 2.6, 2.2, 2.9 };
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  Scene scene(cube, camera);
+  scene.Mapper->SetMaxBounces(6);
+  vtkIceProperty* look = scene.Mapper->GetIceProperty();
+  look->SetNumberOfCracks(3);
+  double bounds[6];
+  cube->GetBounds(bounds);
+  vtkNew<vtkIceCrackTable> table;
+  table->Build(look->GetCrackSeed(), look->GetNumberOfCracks(), bounds);
+  scene.EyeCracks = table;
+  scene.Cracks.Share = look->GetCrackIntensity() * look->GetCrackReflection();
+  scene.Cracks.Edge = vtkIceInteriorLook::CrackEdge;
+  scene.Cracks.EdgeWidth = vtkIceInteriorLook::CrackEdgeWidth;
+  scene.Cracks.Colour = dvec3(vtkIceInteriorLook::CoreColour[0],
+    vtkIceInteriorLook::CoreColour[1], vtkIceInteriorLook::CoreColour[2]);
+  scene.Cracks.Nearest = [&table](const dvec3& p, const dvec3& d, double sEnd, double& s,
+                           dvec3& n, double& edge) {
+    const double o[3] = { p.x, p.y, p.z };
+    const double v[3] = { d.x, d.y, d.z };
+    int record;
+    if (!table->Nearest(o, v, sEnd, s, record, edge))
+    {
+      return false;
+    }
+    double normal[3];
+    table->Normal(record, o, v, s, normal);
+    n = dvec3(normal[0], normal[1], normal[2]);
+    return true;
+  };
+  const IceTest::Image image = scene.Render();
+  bool ok =
+    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "cracked cube: no OpenGL error");
+  // The case means something only where the traced cracks change the reference.
+  size_t changed = 0;
+  size_t compared = 0;
+  ref::TracedCracks none;
+  for (int y = 0; y < image.Height; y += 2)
+  {
+    for (int x = 0; x < image.Width; x += 2)
+    {
+      dvec3 with;
+      dvec3 without;
+      bool seen = false;
+      if (!scene.Reference(x, y, with, &seen) || seen)
+      {
+        continue;
+      }
+      std::swap(scene.Cracks, none);
+      scene.Reference(x, y, without);
+      std::swap(scene.Cracks, none);
+      ++compared;
+      changed += glm::length(with - without) > 8.0 ? 1 : 0;
+    }
+  }
+  ok = IceTest::Expect(changed > compared / 20,
+         "cracked cube: the traced cracks change " + std::to_string(changed) + " of " +
+           std::to_string(compared) + " sampled references without a crack on the eye ray") &&
+    ok;
+  return IceTest::ReportReference("cracked cube, 6 bounces, against its CPU reference",
+           scene.Compare(image), 3000) &&
+    ok;
+}
+
 bool Bounces()
 {
   const double camera[3] = { 2.6, 2.2, 2.9 };
@@ -411,5 +501,5 @@ int TestIceTrace(int argc, char* argv[])
         [&] {
           return AgainstReference("cube with a milky core", Cube(), corner, 6, false, false, true);
         } },
-      { "multisampled", Multisampled } });
+      { "multisampled", Multisampled }, { "cracks", Cracks } });
 }

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <utility>
 
 namespace vtkIceOpticsReference
@@ -207,13 +208,32 @@ struct TracedCore
   Vec3 Colour = Vec3(1.0);
 };
 
+// The cracks on the traced path (ICE_TRACE_CRACKS of vtkIceTraceFS.glsl), here in world
+// coordinates: Share 0 is none. Nearest(p, d, sEnd, s, n, edge) is the nearest crack on the
+// segment p + s d with 0 < s < sEnd: its s, its normal (either side, unnormalised) and `edge`
+// (vtkIceCrackTable::Nearest and ::Normal, taken to the world).
+struct TracedCracks
+{
+  double Share = 0.0;      // iceTraceCrackShare
+  double Edge = 0.0;       // ICE_CRACK_EDGE
+  double EdgeWidth = 0.0;  // ICE_CRACK_EDGE_WIDTH
+  Vec3 Colour = Vec3(1.0); // ICE_CORE_COLOUR
+  std::function<bool(const Vec3&, const Vec3&, double, double&, Vec3&, double&)> Nearest;
+};
+
+inline double SmoothStep(double edge0, double edge1, double x)
+{
+  const double t = std::min(1.0, std::max(0.0, (x - edge0) / (edge1 - edge0)));
+  return t * t * (3.0 - 2.0 * t);
+}
+
 // iceTraceCutoff: less light than this left inside leaves along the reflected ray.
 constexpr double TraceCutoff = 0.005;
 
 template <typename Hit, typename Environment>
 Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, int maxBounces,
   double tMin, const Material& material, const Hit& hit, const Environment& environment,
-  const TracedCore& core = TracedCore())
+  const TracedCore& core = TracedCore(), const TracedCracks& cracks = TracedCracks())
 {
   const double eta = material.RefractionRatio;
   Vec3 d = Refract(e, nFront, eta);
@@ -235,6 +255,24 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
         std::exp(-CoreOpticalDepth((p - core.Center) * core.Scale, d * core.Scale, t, core.Density));
       light += throughput * cover * core.Colour;
       throughput *= 1.0 - cover;
+    }
+    double sCrack;
+    Vec3 nCrack;
+    double edge;
+    if (bounce > 1 && cracks.Share > 0.0 && cracks.Nearest &&
+      cracks.Nearest(p, d, t, sCrack, nCrack, edge))
+    {
+      nCrack = glm::normalize(nCrack);
+      nCrack = glm::dot(nCrack, d) > 0.0 ? -nCrack : nCrack;
+      const double mirror = std::min(
+        1.0, std::max(0.0, cracks.Share * CrackReflectance(glm::dot(d, nCrack), 1.0 / eta)));
+      const double rim = std::min(1.0,
+        std::max(0.0, cracks.Share * cracks.Edge * SmoothStep(1.0 - cracks.EdgeWidth, 1.0, edge)));
+      const Vec3 reaching = throughput *
+        Transmittance(sCrack, material.AttenuationColor, material.InverseAttenuationDistance);
+      light += reaching *
+        ((1.0 - rim) * mirror * environment(Reflect(d, nCrack)) + rim * cracks.Colour);
+      throughput *= (1.0 - mirror) * (1.0 - rim);
     }
     throughput *= Transmittance(t, material.AttenuationColor, material.InverseAttenuationDistance);
     p += t * d;

@@ -24,6 +24,11 @@ uniform vec3 iceTraceCoreCenter;
 uniform vec3 iceTraceCoreScale;
 uniform float iceTraceCoreDensity; // 0: none
 uniform vec3 iceTraceCoreColour;
+#ifdef ICE_TRACE_CRACKS
+// The cracks on the same segments (vtkIceCracksFS.glsl's search, declared before this): the
+// share of a thin gap's reflectance a crack mirrors (CrackIntensity x CrackReflection).
+uniform float iceTraceCrackShare;
+#endif
 
 // Rough ice (vtkIceProperty::Roughness) at each interface the traced light crosses:
 // - what it reflects and transmits is iceRoughInterface's single scattering, which mirrors less
@@ -208,6 +213,33 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
       light += throughput * cover * iceTraceCoreColour;
       throughput *= 1.0 - cover;
     }
+#ifdef ICE_TRACE_CRACKS
+    if (bounce > 1)
+    {
+      // The nearest crack on the segment, as the screen-space interior's sheet on the first
+      // (iceCrackSheet, with the sheet's own normal): it mirrors the environment by its share of
+      // the gap's reflectance and whitens towards its outline; the rest passes the thin gap
+      // straight on. It lies behind the core's cloud of the segment, in front of the rest.
+      vec3 pModel = (iceTraceWCMC * vec4(p, 1.0)).xyz;
+      float sCrack;
+      int crack;
+      float edge;
+      if (iceNearestCrack(pModel, dModel, t, sCrack, crack, edge))
+      {
+        vec3 nCrack = normalize(iceCrackNormal(crack, pModel, dModel, sCrack) * linear);
+        nCrack = dot(nCrack, d) > 0.0 ? -nCrack : nCrack;
+        float mirror =
+          clamp(iceTraceCrackShare * iceCrackReflectance(dot(d, nCrack), 1.0 / eta), 0.0, 1.0);
+        float rim = clamp(iceTraceCrackShare * ICE_CRACK_EDGE *
+            smoothstep(1.0 - ICE_CRACK_EDGE_WIDTH, 1.0, edge), 0.0, 1.0);
+        vec3 reaching =
+          throughput * iceTransmittance(sCrack, iceAttenuationColor, iceInverseAttenuationDistance);
+        light += reaching * ((1.0 - rim) * mirror *
+            iceTracedEnvironmentColor(reflect(d, nCrack), spread2) + rim * ICE_CORE_COLOUR);
+        throughput *= (1.0 - mirror) * (1.0 - rim);
+      }
+    }
+#endif
     throughput *= iceTransmittance(t, iceAttenuationColor, iceInverseAttenuationDistance);
     p += t * d;
     // Normals go to the world by the inverse transpose: n * M is transpose(M) n.
