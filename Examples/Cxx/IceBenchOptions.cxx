@@ -24,7 +24,7 @@ const char* const Usage =
   "  --plot      a PNG of ratios and scaling curves (default none)\n"
   "  --markdown  the tables and the machine as Markdown (default none)\n"
   "  --only      only the groups whose id contains TEXT (e.g. dynamic, cracks, objects, look);\n"
-  "              tree: only the trace's tree, its build time and size\n"
+  "              tree: only the trace's tree and the cracks' grid, build times and sizes\n"
   "  --multisamples N  the window's multisampling (default: VTK's, 4 on llvmpipe)\n"
   "  --backend   x (X display), egl or osmesa (no X needed); default $VTKICE_BACKEND or auto\n";
 }

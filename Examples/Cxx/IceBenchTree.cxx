@@ -1,10 +1,13 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
 // ice-bench's tree measurement: how long vtkIceTriangleBVH (the trace's tree, built on the CPU
-// whenever the ice's input changes) takes to build, and how much it uploads, by triangle count.
+// whenever the ice's input changes) takes to build, and how much it uploads, by triangle count;
+// the same for the cracks' grid (vtkIceCrackGrid, built when the cracks change), by crack count.
 #include "IceBench.h"
 #include "IceBenchScene.h"
 
+#include "vtkIceCrackGrid.h"
+#include "vtkIceCrackTable.h"
 #include "vtkIceTriangleBVH.h"
 
 #include "vtkNew.h"
@@ -15,8 +18,53 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <ostream>
 #include <string>
+
+namespace
+{
+// The fastest of three runs of `build`, in ms.
+double Best(const std::function<void()>& build)
+{
+  double best = 0.0;
+  for (int run = 0; run < 3; ++run)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    build();
+    const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    best = run == 0 ? ms : std::min(best, ms);
+  }
+  return best;
+}
+
+void MeasureCrackGrids(std::ostream& out)
+{
+  using IceBench::Fixed;
+  out << "\n== The cracks' grid (vtkIceCrackTable and vtkIceCrackGrid::Build, CPU; the best of 3;"
+         " a box of side 2)\n"
+      << "   cracks   build ms   cells          sheets a cell   MB uploaded\n";
+  const double bounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
+  for (const int cracks : { 2, 32, 128, 512, 1000 })
+  {
+    vtkNew<vtkIceCrackTable> table;
+    vtkNew<vtkIceCrackGrid> grid;
+    const double ms = Best([&] {
+      table->Build(1, cracks, bounds);
+      grid->Build(table->GetSheets(), bounds);
+    });
+    const int* n = grid->GetDimensions();
+    const std::string cells =
+      std::to_string(n[0]) + " x " + std::to_string(n[1]) + " x " + std::to_string(n[2]);
+    out << "   " << cracks << std::string(9 - std::to_string(cracks).size(), ' ') << Fixed(ms, 1)
+        << "   " << cells << std::string(15 - cells.size(), ' ')
+        << Fixed(grid->GetMeanListLength(), 1) << "   "
+        << Fixed(4.0 * static_cast<double>(grid->GetTexels().size()) / (1024.0 * 1024.0), 2)
+        << "\n";
+  }
+}
+}
 
 void IceBench::MeasureTrees(std::ostream& out)
 {
@@ -38,16 +86,8 @@ void IceBench::MeasureTrees(std::ostream& out)
     normals->Update();
     vtkPolyData* prepared = normals->GetOutput();
     vtkNew<vtkIceTriangleBVH> tree;
-    double best = 0.0;
-    for (int run = 0; run < 3; ++run)
-    {
-      const auto start = std::chrono::steady_clock::now();
-      tree->Build(prepared, prepared->GetPointData()->GetNormals());
-      const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-          .count();
-      best = run == 0 ? ms : std::min(best, ms);
-    }
+    const double best =
+      Best([&] { tree->Build(prepared, prepared->GetPointData()->GetNormals()); });
     const double triangles = static_cast<double>(tree->GetNumberOfTriangles());
     const double bytes =
       4.0 * static_cast<double>(tree->GetNodes().size() + tree->GetTriangles().size());
@@ -57,4 +97,5 @@ void IceBench::MeasureTrees(std::ostream& out)
         << tree->GetNumberOfNodes() << "   " << tree->GetDepth() << "   "
         << Fixed(bytes / (1024.0 * 1024.0), 1) << "\n";
   }
+  MeasureCrackGrids(out);
 }
