@@ -148,6 +148,16 @@ std::vector<Group> DefineGroups()
       c.Bounces = bounces;
       g.Configurations.push_back(c);
     }
+    // Five cracks (the lake and glacier looks'): the screen-space interior's along the eye ray
+    // alone at 1 bounce, and the trace's on every segment after a reflection inside at 8.
+    for (int bounces : { 1, 8 })
+    {
+      Configuration c = Ice(std::to_string(bounces) + (bounces == 1 ? " bounce" : " bounces") +
+          ", 5 cracks",
+        Material::ExitPoint, 5);
+      c.Bounces = bounces;
+      g.Configurations.push_back(c);
+    }
     groups.push_back(g);
   }
 

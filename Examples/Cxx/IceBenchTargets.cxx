@@ -84,14 +84,19 @@ std::vector<IceBench::Target> IceBench::EvaluateTargets(const std::vector<Group>
     [](const Configuration& c) { return c.Interior == Default() && c.Cracks == 2; });
   const Configuration* many = Find(groups, "cracks-teapot",
     [](const Configuration& c) { return c.Interior == Default() && c.Cracks == 128; });
-  IceBench::Target t;
-  t.Name = "cracks 2 -> 128, default interior (teapot)";
-  t.Limit = "adds <= 25 %";
-  t.Bound = 0.25;
-  t.IsIncrease = true;
-  t.Measured = two && many;
-  t.Value = t.Measured ? many->Stats.Median / two->Stats.Median - 1.0 : 0.0;
-  t.Met = t.Measured && t.Value <= t.Bound;
-  targets.push_back(t);
+  // Issue 8 asked +25 %; issue 50 asks +50 % on llvmpipe (and +25 % on a GPU).
+  for (const double bound : { 0.25, 0.5 })
+  {
+    IceBench::Target t;
+    t.Name = bound < 0.3 ? "cracks 2 -> 128, default interior (teapot)"
+                         : "cracks 2 -> 128, issue 50's bound for llvmpipe (teapot)";
+    t.Limit = bound < 0.3 ? "adds <= 25 %" : "adds <= 50 %";
+    t.Bound = bound;
+    t.IsIncrease = true;
+    t.Measured = two && many;
+    t.Value = t.Measured ? many->Stats.Median / two->Stats.Median - 1.0 : 0.0;
+    t.Met = t.Measured && t.Value <= t.Bound;
+    targets.push_back(t);
+  }
   return targets;
 }
