@@ -124,7 +124,9 @@ public:
    * equations at the IndexOfRefraction split it into light refracted out and light reflected on
    * (all of it beyond the critical angle, 49.8 degrees for ice: the mirrored quadrants of a real
    * ice cube), absorbed along every segment; at the last hit what is left leaves. Non-convex ice
-   * works: a ray leaving it is not followed back in.
+   * works: a ray leaving it is not followed back in. With the screen-space interior, each segment
+   * after a reflection inside also crosses the milky core and meets its nearest crack, which
+   * mirrors the environment there as it does seen directly.
    */
   vtkSetClampMacro(MaxBounces, int, 1, 16);
   vtkGetMacro(MaxBounces, int);
