@@ -64,6 +64,7 @@ struct Configuration
   bool Culling = true;
   bool Moving = false; // a ball circles the ice, moved before every frame
   int Bounces = 1;     // vtkIceMapper::MaxBounces (exit point)
+  bool TraceAntiAliasing = true; // vtkIceMapper::TraceAntiAliasing
   // The ice-cube look's parts (vtkIceProperty, exit point only): Roughness, MilkyCoreRadius
   // (with the preset's Milkiness 0.4), BubbleDensity.
   double Roughness = 0.0;

@@ -179,6 +179,11 @@ std::vector<Group> DefineGroups()
     c.Bubbles = part >= 4 ? 1.0 : 0.0;
     look.Configurations.push_back(c);
   }
+  // What the extra paths where one a pixel aliases cost the whole look.
+  Configuration single = look.Configurations.back();
+  single.Label = "ice-cube look, one path a pixel (TraceAntiAliasing off)";
+  single.TraceAntiAliasing = false;
+  look.Configurations.push_back(single);
   groups.push_back(look);
 
   for (const char* size : { "1k", "10k", "100k", "1M" })

@@ -128,6 +128,7 @@ IceBench::Scene IceBench::BuildScene(
     {
       mapper->SetTwoSidedMethodToExitPoint();
       mapper->SetMaxBounces(c.Bounces);
+      mapper->SetTraceAntiAliasing(c.TraceAntiAliasing);
       vtkIceProperty* look = mapper->GetIceProperty();
       look->SetRoughness(c.Roughness);
       look->SetMilkyCoreRadius(c.MilkyCore);

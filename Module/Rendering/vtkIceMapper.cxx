@@ -618,6 +618,7 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   program->SetUniform3f("iceTraceCoreColour", coreColour);
   this->CheckInputClosure();
   program->SetUniformf("iceTraceOrientation", static_cast<float>(this->InputOrientation));
+  program->SetUniformi("iceTraceAntiAliasing", this->TraceAntiAliasing ? 1 : 0);
 
   vtkTextureObject* active[4] = { nullptr, nullptr, nullptr, nullptr };
   this->Trace->Activate(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act,
@@ -765,6 +766,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TwoSidedMethod: "
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
   os << indent << "MaxBounces: " << this->MaxBounces << "\n";
+  os << indent << "TraceAntiAliasing: " << (this->TraceAntiAliasing ? "On" : "Off") << "\n";
   os << indent << "CullHiddenBackfaces: " << (this->CullHiddenBackfaces ? "On" : "Off") << "\n";
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
   static const char* const interiorMethods[] = { "PaperPasses", "ScreenSpace" };

@@ -134,6 +134,21 @@ public:
 
   ///@{
   /**
+   * Whether the trace (MaxBounces above 1) averages more paths where one a pixel would alias.
+   * Behind rounded edges the paths of neighbouring pixels part after a few reflections inside (one
+   * leaves to the sky, the next to the ground), and one path a pixel draws dotted bright and dark
+   * curves where a path tracer shows their average. Default on: where the traced light of a pixel
+   * and its neighbours differs by more than 60 % of its own, four more paths from inside the pixel
+   * are averaged in (on llvmpipe about a quarter more time for ice-render's default look;
+   * Documentation/performance.md). Off: one path a pixel, as the CPU reference traces it.
+   */
+  vtkSetMacro(TraceAntiAliasing, bool);
+  vtkGetMacro(TraceAntiAliasing, bool);
+  vtkBooleanMacro(TraceAntiAliasing, bool);
+  ///@}
+
+  ///@{
+  /**
    * Whether the mapper warns (once) when the renderer has no usable environment texture and the
    * ice reflects the built-in sky. Default on. ParaView's Ice representation turns it off: its
    * views have no environment unless the background is a skybox, and the sky is the default there.
@@ -335,6 +350,7 @@ protected:
   bool TwoSidedRefraction = true;
   int TwoSidedMethod = TwoSidedBlendedNormals;
   int MaxBounces = 1;
+  bool TraceAntiAliasing = true;
   // The triangle tree MaxBounces traces (made on first use), and whether a failed build was said.
   std::unique_ptr<vtkIceTraceTextures> Trace;
   bool WarnedTraceUnusable = false;

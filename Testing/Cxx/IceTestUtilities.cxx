@@ -259,11 +259,16 @@ void AddSky(vtkRenderer* renderer, int faceSize)
 
 void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double direction[3])
 {
+  PixelRay(renderer, x + 0.5, y + 0.5, origin, direction);
+}
+
+void PixelRay(vtkRenderer* renderer, double x, double y, double origin[3], double direction[3])
+{
   vtkCamera* camera = renderer->GetActiveCamera();
   if (camera->GetParallelProjection())
   {
     // Every ray runs along the direction of projection, from the pixel on the near plane.
-    renderer->SetDisplayPoint(x + 0.5, y + 0.5, 0.0);
+    renderer->SetDisplayPoint(x, y, 0.0);
     renderer->DisplayToWorld();
     double world[4];
     renderer->GetWorldPoint(world);
@@ -275,7 +280,7 @@ void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double dire
     return;
   }
   camera->GetPosition(origin);
-  renderer->SetDisplayPoint(x + 0.5, y + 0.5, 0.5);
+  renderer->SetDisplayPoint(x, y, 0.5);
   renderer->DisplayToWorld();
   double world[4];
   renderer->GetWorldPoint(world);

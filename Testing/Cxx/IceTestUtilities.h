@@ -80,6 +80,8 @@ void AddSky(vtkRenderer* renderer, int faceSize);
 // The ray through the centre of window pixel (x, y) (display coordinates) of `renderer`, in world
 // space.
 void PixelRay(vtkRenderer* renderer, int x, int y, double origin[3], double direction[3]);
+// The ray through display point (x, y) (pixel x's centre is x + 0.5).
+void PixelRay(vtkRenderer* renderer, double x, double y, double origin[3], double direction[3]);
 
 // Distances along the unit `direction` to the near and far intersections with the sphere; false
 // when the ray misses it or the sphere is behind.

@@ -22,6 +22,9 @@
 //              each reflection inside (the CPU's cracks: vtkIceCrackTable, every sheet tested);
 //              pixels whose eye ray meets a crack are left out (the screen-space interior draws
 //              those, with its bump texture and the lights)
+//   antialiased  the torus, 6 bounces, TraceAntiAliasing on (the other cases turn it off: the CPU
+//              traces one path a pixel): where the extra paths change the picture, it is nearer
+//              the CPU's mean of 16 paths across each pixel than one path a pixel is
 #include "IceTestResources.h"
 #include "IceTestUtilities.h"
 #include "vtkIceCrackTable.h"
@@ -169,6 +172,7 @@ struct Scene
     this->Mapper->SetInputData(surface);
     IceTest::UseCleanOptics(this->Mapper);
     this->Mapper->SetTwoSidedMethodToExitPoint();
+    this->Mapper->TraceAntiAliasingOff(); // one path a pixel, as the reference
     this->Mapper->GetIceProperty()->SetFresnelModelToDielectric();
     this->Material.DielectricFresnel = true;
     this->Ice->SetMapper(this->Mapper);
@@ -204,6 +208,12 @@ struct Scene
   // The reference colour (0..255) of pixel (x, y); false where its ray misses the ice. `seen`
   // (when given) says whether the eye ray meets a crack of EyeCracks inside the ice.
   bool Reference(int x, int y, dvec3& colour, bool* seen = nullptr) const
+  {
+    return this->Reference(x + 0.5, y + 0.5, colour, seen);
+  }
+
+  // The same through display point (x, y).
+  bool Reference(double x, double y, dvec3& colour, bool* seen = nullptr) const
   {
     double o[3];
     double d[3];
@@ -457,6 +467,67 @@ bool Cracks()
     ok;
 }
 
+bool AntiAliased()
+{
+  const double above[3] = { 0.0, 2.6, 3.6 };
+  Scene scene(Torus(), above);
+  scene.Orientation = 0;
+  scene.Mapper->SetMaxBounces(6);
+  const IceTest::Image single = scene.Render();
+  scene.Mapper->TraceAntiAliasingOn();
+  const IceTest::Image averaged = scene.Render();
+  bool ok =
+    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "antialiased torus: no OpenGL error");
+  // Where the extra paths changed a pixel (by more than 2/255 in a channel), the CPU's mean over
+  // a 4 x 4 grid across it, the whole 16 on the ice.
+  double singleError = 0.0;
+  double averagedError = 0.0;
+  size_t pixels = 0;
+  for (int y = 0; y < single.Height; ++y)
+  {
+    for (int x = 0; x < single.Width; ++x)
+    {
+      double change = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        change = std::max(
+          change, std::abs(static_cast<double>(single.At(x, y)[k]) - averaged.At(x, y)[k]));
+      }
+      if (change <= 2.0)
+      {
+        continue;
+      }
+      dvec3 mean(0.0);
+      bool on = true;
+      for (int i = 0; i < 16 && on; ++i)
+      {
+        dvec3 colour;
+        on = scene.Reference(x + (i % 4 + 0.5) / 4.0, y + (i / 4 + 0.5) / 4.0, colour);
+        mean += glm::min(colour, dvec3(255.0)) / 16.0;
+      }
+      if (!on)
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        singleError += std::abs(single.At(x, y)[k] - mean[k]) / 3.0;
+        averagedError += std::abs(averaged.At(x, y)[k] - mean[k]) / 3.0;
+      }
+      ++pixels;
+    }
+  }
+  const double n = static_cast<double>(std::max<size_t>(pixels, 1));
+  ok = IceTest::Expect(pixels > 500,
+         "antialiased torus: the extra paths change " + std::to_string(pixels) + " pixels") &&
+    ok;
+  return IceTest::Expect(averagedError < 0.6 * singleError,
+           "antialiased torus: against the CPU's mean of 16 paths a pixel there, " +
+             std::to_string(averagedError / n) + "/255 with the extra paths, " +
+             std::to_string(singleError / n) + "/255 with one path") &&
+    ok;
+}
+
 bool Bounces()
 {
   const double camera[3] = { 2.6, 2.2, 2.9 };
@@ -501,5 +572,5 @@ int TestIceTrace(int argc, char* argv[])
         [&] {
           return AgainstReference("cube with a milky core", Cube(), corner, 6, false, false, true);
         } },
-      { "multisampled", Multisampled }, { "cracks", Cracks } });
+      { "multisampled", Multisampled }, { "cracks", Cracks }, { "antialiased", AntiAliased } });
 }

@@ -17,6 +17,8 @@ uniform float iceTraceEpsilon;  // in model units: how far a hit must lie from t
 // takes the point of the triangle's plane at its centre, beyond the edge, outside the next
 // triangle, which the ray would meet at once (a grid of lines along the edges).
 uniform float iceTraceOrientation;
+// 1: more paths where one a pixel aliases (vtkIceMapper::TraceAntiAliasing).
+uniform int iceTraceAntiAliasing;
 // The milky core (vtkIceInteriorLook::CoreFrame, model coordinates) on the segments after the
 // first internal reflection: the screen-space interior shows it along the first segment, and
 // without it here a face whose light reflects totally inside would show no cloud at all.
@@ -72,9 +74,11 @@ vec2 iceTraceSlab(vec3 o, vec3 inv, vec3 low, vec3 high, float tMin, float tMax)
 }
 
 // The triangles of the leaf `child` (its first texel) the ray meets before t: t, the
-// interpolated normal n and the face's normal (both unnormalised) of the nearest.
-bool iceTraceLeaf(
-  vec3 o, vec3 d, float tMin, vec4 child, vec4 count, inout float t, inout vec3 n, inout vec3 face)
+// interpolated normal n and the face's normal (both unnormalised) of the nearest. Those met
+// counter-clockwise are skipped where facing > 0, clockwise where facing < 0 (iceTraceOrientation
+// for a ray inside the ice; its opposite for one coming from outside).
+bool iceTraceLeaf(vec3 o, vec3 d, float tMin, vec4 child, vec4 count, float facing, inout float t,
+  inout vec3 n, inout vec3 face)
 {
   bool hit = false;
   int first = int(child.w);
@@ -87,7 +91,7 @@ bool iceTraceLeaf(
     vec3 s = o - p0;
     vec3 p = cross(d, e2);
     float det = dot(e1, p);
-    if (det == 0.0 || iceTraceOrientation * det > 0.0) // det > 0: met counter-clockwise
+    if (det == 0.0 || facing * det > 0.0) // det > 0: met counter-clockwise
     {
       continue;
     }
@@ -115,7 +119,8 @@ bool iceTraceLeaf(
 // reads both children's boxes; leaves are searched at once (a hit shortens the rest), nodes pushed
 // the nearer last, each with where the ray enters it, so one beyond the nearest hit is skipped
 // unread.
-bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n, out vec3 face)
+bool iceTraceHit(
+  vec3 o, vec3 d, float tMin, float tMax, float facing, out float t, out vec3 n, out vec3 face)
 {
   vec3 inv = vec3(d.x != 0.0 ? 1.0 / d.x : 1.0e30, d.y != 0.0 ? 1.0 / d.y : 1.0e30,
     d.z != 0.0 ? 1.0 / d.z : 1.0e30);
@@ -143,13 +148,13 @@ bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n
     vec2 a = iceTraceSlab(o, inv, lowA.xyz, highA.xyz, tMin, t);
     if (a.x <= a.y && highA.w < 0.0)
     {
-      hit = iceTraceLeaf(o, d, tMin, lowA, highA, t, n, face) || hit;
+      hit = iceTraceLeaf(o, d, tMin, lowA, highA, facing, t, n, face) || hit;
       a = vec2(1.0, 0.0);
     }
     vec2 b = iceTraceSlab(o, inv, lowB.xyz, highB.xyz, tMin, t);
     if (b.x <= b.y && highB.w < 0.0)
     {
-      hit = iceTraceLeaf(o, d, tMin, lowB, highB, t, n, face) || hit;
+      hit = iceTraceLeaf(o, d, tMin, lowB, highB, facing, t, n, face) || hit;
       b = vec2(1.0, 0.0);
     }
     bool enterA = a.x <= a.y && a.x < t;
@@ -176,6 +181,43 @@ bool iceTraceHit(vec3 o, vec3 d, float tMin, float tMax, out float t, out vec3 n
 // vtkIceOpticsReference::TraceCutoff.
 const float iceTraceCutoff = 0.005;
 
+// Whether a pixel's traced light needs more paths (vtkIceTraceFS's Impl): where it changes across
+// the 2 x 2 pixels by more than 60 % of its own value (floor 0.02: dark changes are not
+// seen). change: the largest of |dFdx| and |dFdy| per channel.
+bool iceTraceNeedsSamples(vec3 light, vec3 change)
+{
+  return any(greaterThan(change, 0.6 * max(light, vec3(0.02))));
+}
+
+// Where the eye ray from startWC along eWC (a unit world vector) enters the ice within `reach`
+// (world units): the point and the interpolated normal there, facing the eye. False where it
+// meets none, or a face turned away first (the start was inside the ice).
+bool iceTraceEntry(vec3 startWC, vec3 eWC, float reach, out vec3 entryWC, out vec3 normalWC)
+{
+  mat3 linear = mat3(iceTraceWCMC);
+  float t;
+  vec3 nModel;
+  vec3 faceModel;
+  entryWC = startWC;
+  normalWC = -eWC;
+  if (!iceTraceHit((iceTraceWCMC * vec4(startWC, 1.0)).xyz, linear * eWC, 0.0, reach,
+        -iceTraceOrientation, t, nModel, faceModel))
+  {
+    return false;
+  }
+  entryWC = startWC + t * eWC;
+  normalWC = normalize(nModel * linear);
+  return dot(normalWC, eWC) < 0.0;
+}
+
+// The k-th extra path's offset in the pixel, in pixels from its centre: a rotated grid.
+vec2 iceTraceSampleOffset(int k)
+{
+  vec2 grid[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125), vec2(0.125, 0.375),
+    vec2(-0.375, 0.125));
+  return grid[k];
+}
+
 // The light the eye vector e brings back through the ice it enters at positionWC (front normal
 // nFront, eta = n_air / n_ice): refracted in, then at each of up to iceTraceMaxBounces hits from
 // inside Fresnel's share (iceTracedInterface) reflects on and the rest refracts out into
@@ -200,7 +242,7 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
     vec3 nModel;
     vec3 faceModel;
     if (!iceTraceHit((iceTraceWCMC * vec4(p, 1.0)).xyz, dModel,
-          iceTraceEpsilon / length(dModel), 1.0e30, t, nModel, faceModel))
+          iceTraceEpsilon / length(dModel), 1.0e30, iceTraceOrientation, t, nModel, faceModel))
     {
       break;
     }
@@ -270,6 +312,38 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
 }
 //ICE::Impl
     refracted = iceTracedRefraction(e, icePositionWCVSOutput, nFront, iceRefractionRatio);
+    {
+      // vtkIceMapper::TraceAntiAliasing: up to four more paths from inside the pixel (a rotated
+      // grid) where one path a pixel aliases. Each eye ray finds its own entry in the tree, from
+      // a few pixels' footprints in front of the point the derivatives carry it to; the bumps'
+      // tilt of the centre goes with it. The derivatives are taken before the branch, where every
+      // pixel of the ice is.
+      vec3 dPx = dFdx(icePositionWCVSOutput);
+      vec3 dPy = dFdy(icePositionWCVSOutput);
+      vec3 change = max(abs(dFdx(refracted)), abs(dFdy(refracted)));
+      if (iceTraceAntiAliasing != 0 && iceTraceNeedsSamples(refracted, change))
+      {
+        vec3 smoothNormal = normalize(iceNormalWCVSOutput);
+        vec3 bumpTilt = nFront - (gl_FrontFacing ? smoothNormal : -smoothNormal);
+        float reach = 4.0 * max(length(dPx), length(dPy)) + iceTraceEpsilon;
+        vec3 sum = refracted;
+        float paths = 1.0;
+        for (int k = 0; k < 4; ++k)
+        {
+          vec2 o = iceTraceSampleOffset(k);
+          vec3 guess = icePositionWCVSOutput + o.x * dPx + o.y * dPy;
+          vec3 eye = iceEyeVectorWC(guess);
+          vec3 entry;
+          vec3 normal;
+          if (iceTraceEntry(guess - reach * eye, eye, 2.0 * reach, entry, normal))
+          {
+            sum += iceTracedRefraction(eye, entry, normalize(normal + bumpTilt), iceRefractionRatio);
+            paths += 1.0;
+          }
+        }
+        refracted = sum / paths;
+      }
+    }
 #ifdef ICE_ROUGH_ENVIRONMENT
     if (iceDielectricFresnel > 0.5)
     {
