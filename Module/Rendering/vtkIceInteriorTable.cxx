@@ -149,7 +149,8 @@ std::string vtkIceInteriorTable::Declarations()
 {
   return vtkIceInteriorLook::Defines() + vtkIceShaderSections::Get(vtkIceInteriorLookFS, "Dec") +
     vtkIceShaderSections::Get(vtkIceCracksFS, "Dec") +
-    vtkIceShaderSections::Get(vtkIceInteriorFS, "Dec");
+    vtkIceShaderSections::Get(vtkIceInteriorFS, "Dec") +
+    vtkIceShaderSections::Get(vtkIceInteriorFS, "Bubbles");
 }
 
 //------------------------------------------------------------------------------
@@ -337,18 +338,7 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
 
   auto* window = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   this->Upload(window);
-  if (!this->Bump || this->Bump->GetContext() != window)
-  {
-    this->Bump = vtkSmartPointer<vtkTextureObject>::New();
-    this->Bump->SetContext(window);
-    this->Bump->SetWrapS(vtkTextureObject::Repeat);
-    this->Bump->SetWrapT(vtkTextureObject::Repeat);
-    this->Bump->SetWrapR(vtkTextureObject::Repeat);
-    this->Bump->SetMinificationFilter(vtkTextureObject::Linear);
-    this->Bump->SetMagnificationFilter(vtkTextureObject::Linear);
-    std::vector<float> gradients = BumpGradients();
-    this->Bump->Create3DFromRaw(BumpSize, BumpSize, BumpSize, 3, VTK_FLOAT, gradients.data());
-  }
+  this->MakeBump(window);
   this->Table->Activate();
   this->GridLists->Activate();
   this->Bump->Activate();
@@ -360,6 +350,40 @@ void vtkIceInteriorTable::Prepare(vtkRenderer* renderer, vtkActor* actor, vtkPol
 }
 
 //------------------------------------------------------------------------------
+void vtkIceInteriorTable::MakeBump(vtkOpenGLRenderWindow* window)
+{
+  if (this->Bump && this->Bump->GetContext() == window)
+  {
+    return;
+  }
+  this->Bump = vtkSmartPointer<vtkTextureObject>::New();
+  this->Bump->SetContext(window);
+  this->Bump->SetWrapS(vtkTextureObject::Repeat);
+  this->Bump->SetWrapT(vtkTextureObject::Repeat);
+  this->Bump->SetWrapR(vtkTextureObject::Repeat);
+  this->Bump->SetMinificationFilter(vtkTextureObject::Linear);
+  this->Bump->SetMagnificationFilter(vtkTextureObject::Linear);
+  std::vector<float> gradients = BumpGradients();
+  this->Bump->Create3DFromRaw(BumpSize, BumpSize, BumpSize, 3, VTK_FLOAT, gradients.data());
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTable::PrepareTraceAir(vtkRenderer* renderer, vtkPolyData* ice,
+  vtkIceProperty* look, const Placement& placement, vtkShaderProgram* program,
+  vtkTextureObject* active[3])
+{
+  this->PrepareCracks(renderer, ice, look, placement, program, active);
+  this->MakeBump(static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow()));
+  this->Bump->Activate();
+  active[2] = this->Bump;
+  // No air planes along the trace: the atlas sampler on a 2D texture's unit (see SetUniforms).
+  program->SetUniformi("iceAirAtlas", this->Table->GetTextureUnit());
+  program->SetUniformi("iceAirCount", 0);
+  program->SetUniformi("iceInteriorDebug", 0);
+  this->SetBubbleUniforms(program, look);
+}
+
+//------------------------------------------------------------------------------
 void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
 {
   if (!this->Table || !this->Look)
@@ -367,7 +391,6 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
     return;
   }
   this->SetCrackUniforms(program);
-  program->SetUniformi("iceInteriorBump", this->Bump->GetTextureUnit());
   // Without air the atlas sampler still needs a 2D texture's unit: samplers of different types
   // on one unit (unit 0 by default) make the draw fail.
   program->SetUniformi("iceAirAtlas",
@@ -383,23 +406,30 @@ void vtkIceInteriorTable::SetUniforms(vtkShaderProgram* program)
     static_cast<float>(vtkIceInteriorLook::CrackBumpFrequency(this->Where.Extent)));
   program->SetUniformf("iceMilkiness", static_cast<float>(this->Look->GetMilkiness()));
   program->SetUniformi("iceInteriorDebug", this->Where.Debug);
+  this->SetBubbleUniforms(program, this->Look);
+}
+
+//------------------------------------------------------------------------------
+void vtkIceInteriorTable::SetBubbleUniforms(vtkShaderProgram* program, vtkIceProperty* look)
+{
+  program->SetUniformi("iceInteriorBump", this->Bump->GetTextureUnit());
   // The milky core: its frame in the placement box, its density from the milkiness.
   float coreCenter[3] = { 0.0f, 0.0f, 0.0f };
   float coreScale[3] = { 1.0f, 1.0f, 1.0f };
   double density = 0.0;
-  if (this->Look->HasMilkyCore())
+  if (look->HasMilkyCore())
   {
-    density = vtkIceInteriorLook::CoreDensity(this->Look->GetMilkiness());
+    density = vtkIceInteriorLook::CoreDensity(look->GetMilkiness());
   }
   // The bubbles gather in the core's frame, or in a core of their own.
-  if (this->Look->HasMilkyCore() || this->Look->GetBubbleDensity() > 0.0)
+  if (look->HasMilkyCore() || look->GetBubbleDensity() > 0.0)
   {
     vtkIceInteriorLook::CoreFrame(this->Where.Bounds,
-      this->Look->GetMilkyCoreRadius() > 0.0 ? this->Look->GetMilkyCoreRadius()
+      look->GetMilkyCoreRadius() > 0.0 ? look->GetMilkyCoreRadius()
                                              : vtkIceInteriorLook::BubbleCoreRadius,
       coreCenter, coreScale);
   }
-  program->SetUniformf("iceBubbleDensity", static_cast<float>(this->Look->GetBubbleDensity()));
+  program->SetUniformf("iceBubbleDensity", static_cast<float>(look->GetBubbleDensity()));
   program->SetUniformf("iceBubbleCell",
     static_cast<float>(this->Where.Extent / vtkIceInteriorLook::BubbleCells));
   program->SetUniformf("iceBubbleFade",

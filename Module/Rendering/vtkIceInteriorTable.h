@@ -58,6 +58,10 @@ public:
   // draw), their uniforms set on `program`.
   void PrepareCracks(vtkRenderer* renderer, vtkPolyData* ice, vtkIceProperty* look,
     const Placement& placement, vtkShaderProgram* program, vtkTextureObject* active[2]);
+  // The same with the bubbles and the core they gather in (uniforms and the bump texture they
+  // read, `active[2]`), for the trace's bubbles on the segments after a reflection inside.
+  void PrepareTraceAir(vtkRenderer* renderer, vtkPolyData* ice, vtkIceProperty* look,
+    const Placement& placement, vtkShaderProgram* program, vtkTextureObject* active[3]);
   // The interior's own uniforms (the screen-space step sets the matrices it reads).
   void SetUniforms(vtkShaderProgram* program);
   // After the draw: the textures deactivated.
@@ -80,6 +84,10 @@ private:
   void Order(const double eye[3]);
   // The crack table and grid textures made for `window` and uploaded where anything changed.
   void Upload(vtkOpenGLRenderWindow* window);
+  // The bubbles' feathers and the cracks' tilt read this noise gradient (made once a context).
+  void MakeBump(vtkOpenGLRenderWindow* window);
+  // The bubbles' and the core's uniforms for `look` (its frame in the placement's box).
+  void SetBubbleUniforms(vtkShaderProgram* program, vtkIceProperty* look);
   void SetCrackUniforms(vtkShaderProgram* program);
 
   Placement Where;

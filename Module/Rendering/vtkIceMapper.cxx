@@ -55,7 +55,8 @@ enum ShaderParts
   GlisteningPart = 16,
   RoughPart = 64,
   TracePart = 128,
-  TraceCracksPart = 256
+  TraceCracksPart = 256,
+  TraceBubblesPart = 512
 };
 
 }
@@ -245,6 +246,10 @@ int vtkIceMapper::ShaderVariant() const
   if (this->TracesCracks())
   {
     variant |= TraceCracksPart;
+  }
+  if (this->TracesBubbles())
+  {
+    variant |= TraceBubblesPart;
   }
   return variant;
 }
@@ -479,9 +484,16 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   {
     // With the exit point's frame inputs only: it replaces that estimate's light.
     // The cracks on the segments after a reflection inside: their search before the trace.
-    const std::string cracks = (variant & TraceCracksPart)
-      ? "#define ICE_TRACE_CRACKS\n" + vtkIceInteriorLook::Defines() + Get(vtkIceCracksFS, "Dec")
-      : std::string();
+    // The bubbles need the interior's declarations whole (its uniforms, noise, grid walk).
+    std::string cracks = (variant & TraceCracksPart) ? "#define ICE_TRACE_CRACKS\n" : "";
+    if (variant & TraceBubblesPart)
+    {
+      cracks += "#define ICE_TRACE_BUBBLES\n" + vtkIceInteriorTable::Declarations();
+    }
+    else if (variant & TraceCracksPart)
+    {
+      cracks += vtkIceInteriorLook::Defines() + Get(vtkIceCracksFS, "Dec");
+    }
     parts.FragmentFunctions +=
       "\n#ifdef ICE_FRAME_EXIT_POINT\n" + cracks + Get(vtkIceTraceFS, "Dec") + "\n#endif\n";
     parts.Hooks.emplace_back("Refracted",
@@ -620,12 +632,12 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   program->SetUniformf("iceTraceOrientation", static_cast<float>(this->InputOrientation));
   program->SetUniformi("iceTraceAntiAliasing", this->TraceAntiAliasing ? 1 : 0);
 
-  vtkTextureObject* active[4] = { nullptr, nullptr, nullptr, nullptr };
+  vtkTextureObject* active[5] = { nullptr, nullptr, nullptr, nullptr, nullptr };
   this->Trace->Activate(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act,
     this->MaxBounces, active);
-  if (program->IsUniformUsed("iceTraceCrackShare"))
+  if (program->IsUniformUsed("iceTraceCrackShare") || program->IsUniformUsed("iceBubbleCell"))
   {
-    this->PrepareTraceCracks(ren, program, active + 2);
+    this->PrepareTraceInterior(ren, program, active + 2);
   }
   for (vtkTextureObject* texture : active)
   {

@@ -126,7 +126,8 @@ public:
    * ice cube), absorbed along every segment; at the last hit what is left leaves. Non-convex ice
    * works: a ray leaving it is not followed back in. With the screen-space interior, each segment
    * after a reflection inside also crosses the milky core and meets its nearest crack, which
-   * mirrors the environment there as it does seen directly.
+   * mirrors the environment there as it does seen directly, and the first such segment crosses
+   * the bubbles.
    */
   vtkSetClampMacro(MaxBounces, int, 1, 16);
   vtkGetMacro(MaxBounces, int);
@@ -356,10 +357,12 @@ protected:
   bool WarnedTraceUnusable = false;
   bool TracesInterior() const;
   void SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
-  // Whether the trace meets the cracks on its segments after a reflection inside (the
-  // screen-space interior shows them along the first), and their table and grid for it.
+  // Whether the trace meets the cracks, and the bubbles, on its segments after a reflection
+  // inside (the screen-space interior shows them along the first), and what it reads of them
+  // (the crack table and grid, the bubbles' noise: `active`, three at most).
   bool TracesCracks() const;
-  void PrepareTraceCracks(vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[2]);
+  bool TracesBubbles() const;
+  void PrepareTraceInterior(vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[3]);
   int InteriorMethod = InteriorScreenSpace;
   int DebugView = DebugOff;
   bool WarnWithoutEnvironment = true;

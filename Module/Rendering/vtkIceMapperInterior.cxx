@@ -130,16 +130,35 @@ bool vtkIceMapper::TracesCracks() const
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::PrepareTraceCracks(
-  vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[2])
+bool vtkIceMapper::TracesBubbles() const
+{
+  return this->TracesInterior() && this->InteriorMethod == InteriorScreenSpace &&
+    this->DebugView == DebugOff && !this->InputFlat &&
+    this->IceProperty->GetBubbleDensity() > 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::PrepareTraceInterior(
+  vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[3])
 {
   vtkIceInteriorTable::Placement placement;
   this->GetLookBounds(placement.Bounds);
   PlaceInterior(placement, this->InputExtent(), this->DebugView, this->InputFlat);
-  this->InteriorTable->PrepareCracks(
-    ren, this->PreparedInput, this->IceProperty, placement, program, active);
-  program->SetUniformf("iceTraceCrackShare",
-    static_cast<float>(this->IceProperty->GetCrackIntensity() * this->IceProperty->GetCrackReflection()));
+  if (program->IsUniformUsed("iceBubbleCell"))
+  {
+    this->InteriorTable->PrepareTraceAir(
+      ren, this->PreparedInput, this->IceProperty, placement, program, active);
+  }
+  else
+  {
+    this->InteriorTable->PrepareCracks(
+      ren, this->PreparedInput, this->IceProperty, placement, program, active);
+  }
+  if (program->IsUniformUsed("iceTraceCrackShare"))
+  {
+    program->SetUniformf("iceTraceCrackShare", static_cast<float>(this->IceProperty->GetCrackIntensity() *
+      this->IceProperty->GetCrackReflection()));
+  }
 }
 
 //------------------------------------------------------------------------------

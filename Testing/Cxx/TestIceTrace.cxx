@@ -22,6 +22,11 @@
 //              each reflection inside (the CPU's cracks: vtkIceCrackTable, every sheet tested);
 //              pixels whose eye ray meets a crack are left out (the screen-space interior draws
 //              those, with its bump texture and the lights)
+//   bubbles    the cube with bubbles (no core's cloud), 6 bounces: the trace shows them on the
+//              segment after the first reflection inside. Pixels whose first segment stays clear
+//              of the bubbles while the second, after a total reflection, crosses their middle
+//              differ from the bubble-free reference; those whose two segments both stay clear
+//              agree with it
 //   antialiased  the torus, 6 bounces, TraceAntiAliasing on (the other cases turn it off: the CPU
 //              traces one path a pixel): where the extra paths change the picture, it is nearer
 //              the CPU's mean of 16 paths across each pixel than one path a pixel is
@@ -467,6 +472,112 @@ bool Cracks()
     ok;
 }
 
+// The closest a segment p + s d, s in [0, length], comes to the centre of the frame where the
+// bubbles' ball has radius 1 (vtkIceInteriorLook::CoreFrame).
+double Closest(const dvec3& p, const dvec3& d, double length, const dvec3& centre, const dvec3& scale)
+{
+  const dvec3 u = (p - centre) * scale;
+  const dvec3 du = d * scale;
+  const double s = std::clamp(-glm::dot(u, du) / std::max(glm::dot(du, du), 1.0e-30), 0.0, length);
+  return glm::length(u + s * du);
+}
+
+bool Bubbles()
+{
+  const double camera[3] = { 2.6, 2.2, 2.9 };
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  Scene scene(cube, camera);
+  scene.Mapper->SetMaxBounces(6);
+  vtkIceProperty* look = scene.Mapper->GetIceProperty();
+  look->SetBubbleDensity(1.0);
+  look->SetMilkiness(0.0);
+  look->SetMilkyCoreRadius(0.0); // the bubbles gather in a core of their own
+  double bounds[6];
+  cube->GetBounds(bounds);
+  double c[3];
+  double k[3];
+  vtkIceInteriorLook::CoreFrame(bounds, vtkIceInteriorLook::BubbleCoreRadius, c, k);
+  const dvec3 centre(c[0], c[1], c[2]);
+  const dvec3 scale(k[0], k[1], k[2]);
+  const IceTest::Image image = scene.Render();
+  bool ok =
+    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "bubbly cube: no OpenGL error");
+  const double eta = scene.Material.RefractionRatio;
+  const double epsilon = 1.0e-5 * scene.WorldTree->GetDiagonal();
+  size_t crossing = 0;
+  size_t differing = 0;
+  std::vector<double> clearErrors;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      dvec3 reference;
+      if (!scene.Reference(x, y, reference))
+      {
+        continue;
+      }
+      // The first two segments, as the trace follows them.
+      double o[3];
+      double v[3];
+      IceTest::PixelRay(scene.Renderer, x, y, o, v);
+      const dvec3 e = glm::normalize(dvec3(v[0], v[1], v[2]));
+      double t;
+      double n[3];
+      double f[3];
+      scene.WorldTree->Intersect(o, &e.x, 0.0, 1.0e30, t, n);
+      dvec3 nFront = glm::normalize(dvec3(n[0], n[1], n[2]));
+      nFront = glm::dot(nFront, e) > 0.0 ? -nFront : nFront;
+      const dvec3 entry = dvec3(o[0], o[1], o[2]) + t * e;
+      double chord;
+      scene.WorldTree->Intersect(&entry.x, &e.x, epsilon, 1.0e30, chord, n, f, scene.Orientation);
+      const dvec3 d1 = ref::Refract(e, nFront, eta);
+      double t1;
+      if (!scene.WorldTree->Intersect(&entry.x, &d1.x, epsilon, 1.0e30, t1, n, f, scene.Orientation))
+      {
+        continue;
+      }
+      dvec3 n1 = glm::normalize(dvec3(n[0], n[1], n[2]));
+      n1 = glm::dot(n1, d1) < 0.0 ? -n1 : n1;
+      const dvec3 p1 = entry + t1 * d1;
+      const dvec3 d2 = ref::Reflect(d1, n1);
+      double t2;
+      if (!scene.WorldTree->Intersect(&p1.x, &d2.x, epsilon, 1.0e30, t2, n, f, scene.Orientation))
+      {
+        continue;
+      }
+      // The screen-space interior shows the bubbles along the first segment over the longer of
+      // the eye ray's chord and the refracted ray's path.
+      const bool firstClear = Closest(entry, d1, std::max(t1, chord), centre, scale) > 2.0;
+      const double second = Closest(p1, d2, t2, centre, scale);
+      double change = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        change = std::max(change, std::abs(image.At(x, y)[i] - std::min(255.0, reference[i])));
+      }
+      if (firstClear && second < 0.8 &&
+        ref::DielectricReflectance(glm::dot(d1, n1), 1.0 / eta) >= 1.0)
+      {
+        ++crossing;
+        differing += change > 16.0 ? 1 : 0;
+      }
+      else if (firstClear && second > 2.0)
+      {
+        clearErrors.push_back(change);
+      }
+    }
+  }
+  ok = IceTest::Expect(crossing > 300 && differing > crossing / 5,
+         "bubbly cube: " + std::to_string(differing) + " of the " + std::to_string(crossing) +
+           " pixels whose second segment alone crosses the bubbles' middle show them") &&
+    ok;
+  const IceTest::Stats clear = IceTest::Summarize(clearErrors);
+  return IceTest::Expect(clearErrors.size() > 300 && clear.Mean < 1.5,
+           "bubbly cube: the " + std::to_string(clearErrors.size()) +
+             " pixels whose two segments stay clear of them agree with the bubble-free reference: "
+             "mean " + std::to_string(clear.Mean) + "/255") &&
+    ok;
+}
+
 bool AntiAliased()
 {
   const double above[3] = { 0.0, 2.6, 3.6 };
@@ -572,5 +683,6 @@ int TestIceTrace(int argc, char* argv[])
         [&] {
           return AgainstReference("cube with a milky core", Cube(), corner, 6, false, false, true);
         } },
-      { "multisampled", Multisampled }, { "cracks", Cracks }, { "antialiased", AntiAliased } });
+      { "multisampled", Multisampled }, { "cracks", Cracks }, { "bubbles", Bubbles },
+      { "antialiased", AntiAliased } });
 }

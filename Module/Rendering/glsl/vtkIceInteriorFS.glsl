@@ -64,41 +64,13 @@ float iceBubbleProfile(vec3 u)
   return exp(-dot(a, a));
 }
 
-//ICE::Functions
-// The interior as what it does to the ice colour c behind it: c * keep + add, kept as
-// vec4(add, keep), since every layer mixes c towards its own colour by a scalar or adds light.
-// Layer `colour` over `t` with coverage `a`.
-void iceInteriorOver(inout vec4 t, vec3 colour, float a)
-{
-  t = vec4(mix(t.rgb, colour, a), t.a * (1.0 - a));
-}
-
-// The nearest crack seen along the eye ray e (the paper passes' crack program has no
-// environment), at its normal n, as a sheet over `t`: it mirrors the environment (`mirrored`:
-// what lies along e reflected about n) by `share` of its reflectance, all of it at glancing
-// angles (iceCrackReflectance), and its rim (`edge`, 1 at the outline) scatters white light, so
-// its outline shows even where it mirrors little.
-void iceCrackSheet(inout vec4 t, vec3 e, vec3 n, float edge, float ior, float share,
-  vec3 mirrored)
-{
-  iceInteriorOver(t, mirrored, clamp(share * iceCrackReflectance(dot(e, n), ior), 0.0, 1.0));
-  float rim = smoothstep(1.0 - ICE_CRACK_EDGE_WIDTH, 1.0, edge);
-  iceInteriorOver(t, ICE_CORE_COLOUR, clamp(share * ICE_CRACK_EDGE * rim, 0.0, 1.0));
-}
-
-// Highlights of VTK's lights on a crack at `positionWC` with normal n (facing the viewer).
-vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
-{
-  vec3 light = vec3(0.0);
-  //ICEHOOK::InteriorLights
-  return light;
-}
-
+//ICE::Bubbles
 // The bubbles along the ray o + s d (model coordinates, s in world units up to sBack), front to
 // back through the cells of their grid (one bubble at most in a cell, fully inside it), as
 // vec4(add, keep) with the nearest first. A bubble scatters white light, brightest at its rim;
 // the ice and the core's cloud in front of it fade it. Rays through a column that holds a stream
-// meet bubbles lined up vertically.
+// meet bubbles lined up vertically. Also traced (vtkIceTraceFS.glsl) on the segments after a
+// reflection inside, with the pixel's footprint carried along the path.
 vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection,
   float viewDepth, float along)
 {
@@ -162,6 +134,36 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
     sCell = iceGridStep(walk);
   }
   return layer;
+}
+
+//ICE::Functions
+// The interior as what it does to the ice colour c behind it: c * keep + add, kept as
+// vec4(add, keep), since every layer mixes c towards its own colour by a scalar or adds light.
+// Layer `colour` over `t` with coverage `a`.
+void iceInteriorOver(inout vec4 t, vec3 colour, float a)
+{
+  t = vec4(mix(t.rgb, colour, a), t.a * (1.0 - a));
+}
+
+// The nearest crack seen along the eye ray e (the paper passes' crack program has no
+// environment), at its normal n, as a sheet over `t`: it mirrors the environment (`mirrored`:
+// what lies along e reflected about n) by `share` of its reflectance, all of it at glancing
+// angles (iceCrackReflectance), and its rim (`edge`, 1 at the outline) scatters white light, so
+// its outline shows even where it mirrors little.
+void iceCrackSheet(inout vec4 t, vec3 e, vec3 n, float edge, float ior, float share,
+  vec3 mirrored)
+{
+  iceInteriorOver(t, mirrored, clamp(share * iceCrackReflectance(dot(e, n), ior), 0.0, 1.0));
+  float rim = smoothstep(1.0 - ICE_CRACK_EDGE_WIDTH, 1.0, edge);
+  iceInteriorOver(t, ICE_CORE_COLOUR, clamp(share * ICE_CRACK_EDGE * rim, 0.0, 1.0));
+}
+
+// Highlights of VTK's lights on a crack at `positionWC` with normal n (facing the viewer).
+vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
+{
+  vec3 light = vec3(0.0);
+  //ICEHOOK::InteriorLights
+  return light;
 }
 
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,

@@ -26,6 +26,13 @@ uniform vec3 iceTraceCoreCenter;
 uniform vec3 iceTraceCoreScale;
 uniform float iceTraceCoreDensity; // 0: none
 uniform vec3 iceTraceCoreColour;
+#ifdef ICE_TRACE_BUBBLES
+// The bubbles (vtkIceInteriorFS.glsl's iceBubbles, declared before this) on the first segment
+// after a reflection inside, where a face that reflects totally shows the core's bubbles, and
+// only within this distance of the core's centre in its frame (iceBubbleProfile is 6 % at the
+// corners of that ball's cube): the grid's walk is the cost. Later segments carry little light.
+const float iceTraceBubbleReach = 1.7;
+#endif
 #ifdef ICE_TRACE_CRACKS
 // The cracks on the same segments (vtkIceCracksFS.glsl's search, declared before this): the
 // share of a thin gap's reflectance a crack mirrors (CrackIntensity x CrackReflection).
@@ -223,8 +230,9 @@ vec2 iceTraceSampleOffset(int k)
 // inside Fresnel's share (iceTracedInterface) reflects on and the rest refracts out into
 // the environment; at the last hit all that is left leaves (refracted, or reflected where it
 // cannot), as does a ray that meets no triangle or one with less than iceTraceCutoff left.
-// Absorbed along every segment.
-vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
+// Absorbed along every segment. withBubbles: whether the bubbles show on the segment after the
+// first reflection inside (the extra paths of TraceAntiAliasing leave them to the centre's).
+vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool withBubbles)
 {
   vec3 d = iceRefract(e, nFront, eta);
   // The squared spread of the path so far, per angle of a microfacet's tilt.
@@ -234,6 +242,9 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
   vec3 throughput = vec3(1.0);
   vec3 light = vec3(0.0);
   mat3 linear = mat3(iceTraceWCMC);
+#ifdef ICE_TRACE_BUBBLES
+  float travelled = 0.0; // world units from the front face
+#endif
   for (int bounce = 1; bounce <= iceTraceMaxBounces; ++bounce)
   {
     // d is a unit world vector: t is the world distance.
@@ -246,6 +257,29 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
     {
       break;
     }
+#ifdef ICE_TRACE_BUBBLES
+    if (bounce == 2 && withBubbles)
+    {
+      // In front of the core's cloud of the segment, faded by it (as along the first segment);
+      // the pixel's footprint grows with the path from the front face (icePixelFootprint).
+      vec3 pModel = (iceTraceWCMC * vec4(p, 1.0)).xyz;
+      vec3 u = (pModel - iceCoreCenter) * iceCoreScale;
+      vec3 du = dModel * iceCoreScale;
+      float a = dot(du, du);
+      float b = dot(u, du);
+      float reach = b * b - a * (dot(u, u) - iceTraceBubbleReach * iceTraceBubbleReach);
+      float s0 = reach > 0.0 ? max((-b - sqrt(reach)) / a, 0.0) : t;
+      float s1 = reach > 0.0 ? min((-b + sqrt(reach)) / a, t) : 0.0;
+      if (s1 > s0)
+      {
+        vec4 bubbles = iceBubbles(
+          pModel + s0 * dModel, dModel, s1 - s0, u + s0 * du, du, travelled + s0, 1.0);
+        light += throughput * bubbles.rgb;
+        throughput *= bubbles.a;
+      }
+    }
+    travelled += t;
+#endif
     if (bounce > 1 && iceTraceCoreDensity > 0.0)
     {
       // The core scatters its white light towards the eye and hides what lies behind it.
@@ -311,7 +345,13 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
   return light + throughput * iceTracedEnvironmentColor(d, spread2);
 }
 //ICE::Impl
-    refracted = iceTracedRefraction(e, icePositionWCVSOutput, nFront, iceRefractionRatio);
+#ifdef ICE_TRACE_BUBBLES
+    // The pixel's width where the path leaves the front face, and how fast it grows along it.
+    icePixelFootprint = vec2(
+      max(length(dFdx(icePositionWCVSOutput)), length(dFdy(icePositionWCVSOutput))),
+      max(length(dFdx(e)), length(dFdy(e))));
+#endif
+    refracted = iceTracedRefraction(e, icePositionWCVSOutput, nFront, iceRefractionRatio, true);
     {
       // vtkIceMapper::TraceAntiAliasing: up to four more paths from inside the pixel (a rotated
       // grid) where one path a pixel aliases. Each eye ray finds its own entry in the tree, from
@@ -337,7 +377,8 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta)
           vec3 normal;
           if (iceTraceEntry(guess - reach * eye, eye, 2.0 * reach, entry, normal))
           {
-            sum += iceTracedRefraction(eye, entry, normalize(normal + bumpTilt), iceRefractionRatio);
+            sum += iceTracedRefraction(
+              eye, entry, normalize(normal + bumpTilt), iceRefractionRatio, false);
             paths += 1.0;
           }
         }
