@@ -376,6 +376,7 @@ void vtkIceMapper::BindEnvironment(vtkRenderer* ren, vtkActor* act)
   // A dynamic cube map is handed to the shader by the pass that rendered it.
   vtkIceFrame* frame = vtkIceFrame::Of(act);
   vtkTextureObject* dynamicCubeMap = frame ? frame->CubeMapOf(act) : nullptr;
+  this->EnvironmentEncoded = vtkIceStaticEnvironment::ShowsEncodedLight(ren);
   this->ActiveEnvironmentObject = dynamicCubeMap
     ? nullptr
     : this->Environment->Bind(ren, this->WarnWithoutEnvironment ? this : nullptr);
@@ -415,6 +416,12 @@ void vtkIceMapper::SetEnvironmentUniforms(vtkShaderProgram* program)
       this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity));
   program->SetUniformi("iceEnvironmentColorSpace",
     this->ActiveEnvironmentObject ? this->Environment->GetColorSpace() : 0);
+  // Beer-Lambert's factor acts on light: on gamma-encoded colours it is its own 1/2.2th power
+  // (else a path absorbs as if 2.2 times as long: measured against Mitsuba in ice-render's scene).
+  if (program->IsUniformUsed("iceAbsorptionPower"))
+  {
+    program->SetUniformf("iceAbsorptionPower", this->EnvironmentEncoded ? 1.0f / 2.2f : 1.0f);
+  }
   if (this->ActiveEnvironmentObject)
   {
     program->SetUniformi("iceEnvironment", this->ActiveEnvironmentObject->GetTextureUnit());

@@ -376,6 +376,7 @@ protected:
   // The renderer's environment or the built-in sky, when no pass hands a dynamic cube map.
   std::unique_ptr<vtkIceStaticEnvironment> Environment;
   vtkTextureObject* ActiveEnvironmentObject = nullptr; // what the shader samples, if bound here
+  bool EnvironmentEncoded = false; // vtkIceStaticEnvironment::ShowsEncodedLight, at the bind
   // What it samples where the surface is rough (Roughness), bound during a draw.
   std::unique_ptr<vtkIcePrefilteredEnvironment> Prefiltered;
   vtkTextureObject* ActiveRoughEnvironment = nullptr;

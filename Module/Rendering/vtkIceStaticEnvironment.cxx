@@ -99,6 +99,12 @@ vtkSmartPointer<vtkImageData> DecodeSRGB(vtkImageData* image)
 }
 
 //------------------------------------------------------------------------------
+bool vtkIceStaticEnvironment::ShowsEncodedLight(vtkRenderer* renderer)
+{
+  return ShowsGammaCorrected(renderer, renderer->GetEnvironmentTexture());
+}
+
+//------------------------------------------------------------------------------
 vtkTexture* vtkIceStaticEnvironment::Select(vtkRenderer* renderer, vtkObject* owner)
 {
   vtkTexture* env = renderer->GetEnvironmentTexture();

@@ -36,6 +36,10 @@ public:
     FromLinear = 1
   };
   int GetColorSpace() const { return this->ColorSpace; }
+  // Whether `renderer` shows its environment texture gamma-corrected (FromLinear): then the
+  // colours around the ice, in that texture as the shader shows them and in a dynamic cube map
+  // of the scene, are gamma-encoded linear light.
+  static bool ShowsEncodedLight(vtkRenderer* renderer);
   // Changes when the bound texture's texels may have changed (for a copy made of them).
   vtkMTimeType GetVersion() const { return this->Version; }
   void ReleaseGraphicsResources(vtkWindow* window);

@@ -4,12 +4,16 @@
 // against the CPU reference: an ice sphere with IndexOfRefraction 1 and no reflection passes every
 // view ray straight through, so each interior pixel must be the skybox behind it times the
 // transmittance of the ray's chord through the sphere (vtkIceOpticsReference::Transmittance of
-// EyePathLength, with the sphere's exact front and back depths), for both two-sided methods.
+// EyePathLength, with the sphere's exact front and back depths), for both two-sided methods; and
+// behind a skybox that shows its texture as linear light, gamma-corrected, the encoded colour
+// behind times the transmittance's 1/2.2th power (the light itself keeps the transmittance).
 #include "IceTestUtilities.h"
 #include "vtkIceMapper.h"
 
 #include "vtkCamera.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
+#include "vtkSkybox.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +25,10 @@ namespace
 const glm::dvec3 AttenuationColor(0.3, 0.6, 0.9);
 const double AttenuationDistance = 1.5;
 
-// Every interior pixel: the background behind it times the transmittance of its chord.
-IceTest::Stats CompareWithReference(IceTest::ClearSphereScene& scene, const IceTest::Image& image)
+// Every interior pixel: the background behind it times the transmittance of its chord, to the
+// power `power` (1/2.2 where the background shows gamma-encoded light).
+IceTest::Stats CompareWithReference(
+  IceTest::ClearSphereScene& scene, const IceTest::Image& image, double power = 1.0)
 {
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   glm::dvec3 viewDirection;
@@ -37,7 +43,7 @@ IceTest::Stats CompareWithReference(IceTest::ClearSphereScene& scene, const IceT
         vtkIceOpticsReference::EyePathLength(e, viewDirection, frontDepth, backDepth),
         AttenuationColor, 1.0 / AttenuationDistance);
       const unsigned char* behind = scene.Background.At(x, y);
-      return glm::dvec3(behind[0], behind[1], behind[2]) * transmittance;
+      return glm::dvec3(behind[0], behind[1], behind[2]) * glm::pow(transmittance, glm::dvec3(power));
     });
 }
 }
@@ -64,5 +70,24 @@ int TestIceAbsorption(int, char*[])
            std::string("absorption along the chord, ") + method.Name, stats, 20000) &&
       ok;
   }
+
+  // The skybox gamma-corrects its texture (as ParaView's does, and ice-render's of an HDR
+  // panorama): the ice's colours are gamma-encoded too.
+  vtkSkybox* skybox = nullptr;
+  vtkCollectionSimpleIterator it;
+  vtkPropCollection* props = scene.Renderer->GetViewProps();
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    skybox = skybox ? skybox : vtkSkybox::SafeDownCast(prop);
+  }
+  skybox->GammaCorrectOn();
+  scene.Ice->VisibilityOff();
+  scene.Background = scene.Render();
+  scene.Ice->VisibilityOn();
+  const IceTest::Stats stats = CompareWithReference(scene, scene.Render(), 1.0 / 2.2);
+  ok = IceTest::ReportReference(
+         "absorption along the chord, gamma-corrected skybox (exit point)", stats, 20000) &&
+    ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -5,7 +5,7 @@
 The scene is ice-render's default (the `cube` model on the ground in blender-data's `forest`
 panorama, its camera, filmic tone mapping), with the ice as nature makes it:
 - the rounded cube itself, index of refraction 1.31, a faint blue absorption (the ice-cube
-  preset's attenuation colour 0.8, 0.92, 0.98 at 1.2);
+  preset's attenuation colour 0.8, 0.92, 0.98 at 0.9);
 - a core of a few hundred small air bubbles (mixed sizes, small ones most, thickest at the
   centre) and a few vertical streams of them;
 - two thin planar air cracks with irregular outlines;
@@ -30,7 +30,7 @@ WIDTH, HEIGHT = 512, 384
 CAMERA = ((3.2, 1.4, 5.6), (0.0, -0.2, 0.0))  # ice-render's with a ground (IceScene.cxx)
 VIEW_ANGLE = 32.0
 IOR = 1.31
-ATTENUATION = ((0.8, 0.92, 0.98), 1.2)  # the ice-cube preset's colour at its distance
+ATTENUATION = ((0.8, 0.92, 0.98), 0.9)  # the ice-cube preset's colour at its distance
 GROUND_HALF_SIZE = 12.0  # IceGround: 6 model extents
 PANORAMA = "/usr/share/blender/datafiles/studiolights/world/forest.exr"
 

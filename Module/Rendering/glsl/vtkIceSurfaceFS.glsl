@@ -43,6 +43,9 @@ uniform float iceDielectricFresnel; // 1: vtkIceProperty::FresnelDielectric
 uniform vec3 iceTint;
 uniform vec3 iceAttenuationColor;
 uniform float iceInverseAttenuationDistance;
+// 1 where the colours around the ice are linear light, 1/2.2 where they are gamma-encoded
+// (vtkIceStaticEnvironment::ShowsEncodedLight): the power absorption takes on them.
+uniform float iceAbsorptionPower;
 //ICE::Impl
   {
     vec3 e = iceEyeVectorWC(icePositionWCVSOutput);
@@ -63,7 +66,8 @@ uniform float iceInverseAttenuationDistance;
     float icePathLength = 0.0;
     //ICEHOOK::PathLength
     vec3 refracted = iceSurfaceEnvironmentColor(refractedDirection) *
-      iceTransmittance(icePathLength, iceAttenuationColor, iceInverseAttenuationDistance);
+      iceTransmittance(icePathLength, iceAttenuationColor,
+        iceInverseAttenuationDistance * iceAbsorptionPower);
     //ICEHOOK::Refracted
     vec3 reflected = iceSurfaceEnvironmentColor(iceReflect(e, nFront));
     vec3 iceColor = iceTint;

@@ -309,14 +309,16 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool w
         float rim = clamp(iceTraceCrackShare * ICE_CRACK_EDGE *
             smoothstep(1.0 - ICE_CRACK_EDGE_WIDTH, 1.0, edge), 0.0, 1.0);
         vec3 reaching =
-          throughput * iceTransmittance(sCrack, iceAttenuationColor, iceInverseAttenuationDistance);
+          throughput * iceTransmittance(
+            sCrack, iceAttenuationColor, iceInverseAttenuationDistance * iceAbsorptionPower);
         light += reaching * ((1.0 - rim) * mirror *
             iceTracedEnvironmentColor(reflect(d, nCrack), spread2) + rim * ICE_CORE_COLOUR);
         throughput *= (1.0 - mirror) * (1.0 - rim);
       }
     }
 #endif
-    throughput *= iceTransmittance(t, iceAttenuationColor, iceInverseAttenuationDistance);
+    throughput *= iceTransmittance(
+      t, iceAttenuationColor, iceInverseAttenuationDistance * iceAbsorptionPower);
     p += t * d;
     // Normals go to the world by the inverse transpose: n * M is transpose(M) n.
     vec3 n = normalize(nModel * linear);
