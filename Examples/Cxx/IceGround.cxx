@@ -146,7 +146,8 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
   // leaves around its foot, with an uneven edge.
   const std::vector<double> tight = Blur(cover, texels, 0.02 * extent / texel);
   const std::vector<double> wide = Blur(cover, texels, 0.25 * extent / texel);
-  const std::vector<double> near = Blur(cover, texels, 0.06 * extent / texel);
+  // The melt water: a pool a little wider than the foot.
+  const std::vector<double> pool = Blur(cover, texels, 0.15 * extent / texel);
   vtkNew<vtkImageData> image;
   image->SetDimensions(texels, texels, 1);
   image->AllocateScalars(VTK_DOUBLE, 3);
@@ -158,7 +159,7 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
       const size_t k = static_cast<size_t>(j) * texels + i;
       const double at[3] = { 6.0 * ((i + 0.5) * texel - halfSize) / extent, 0.0,
         6.0 * (halfSize - (j + 0.5) * texel) / extent };
-      const double edge = near[k] + 0.12 * vtkIceNoise::FractalNoise(at, 7);
+      const double edge = pool[k] + 0.15 * vtkIceNoise::FractalNoise(at, 7);
       // Well inside the footprint (seen only through the ice), and along its outline.
       const double t = std::clamp((tight[k] - 0.93) / 0.06, 0.0, 1.0);
       const double under = t * t * (3.0 - 2.0 * t);
@@ -166,7 +167,7 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
       const double shadow = 0.55 * std::max(outline, tight[k]) + 0.45 * wide[k];
       out[3 * k] = std::min(1.0, shadow * (1.0 - under));
       // Only near the foot: no wet spots of noise alone far from the ice.
-      out[3 * k + 1] = std::clamp((edge - 0.04) / 0.1, 0.0, 1.0) * std::min(1.0, 40.0 * near[k]);
+      out[3 * k + 1] = std::clamp((edge - 0.05) / 0.08, 0.0, 1.0) * std::min(1.0, 20.0 * pool[k]);
       // The light the ice gathers, uneven as its surface is.
       const double ripples[3] = { 3.0 * at[0], 0.0, 3.0 * at[2] };
       out[3 * k + 2] =
@@ -246,6 +247,31 @@ vtkSmartPointer<vtkActor> MakeGround(
   // and the light it gathers under itself brightens the ground by up to this much more.
   const double strength = 0.7;
   const double caustic = 0.6;
+  // The stone's brightness first, then blurred: its single grains a few pixels wide at the ice's
+  // distance, softened to what a photograph resolves, and more with the distance from the ice, as
+  // a camera focused on the ice blurs them (and as the panorama behind is blurred).
+  std::vector<double> stone(static_cast<size_t>(fine) * fine);
+  for (int j = 0; j < fine; ++j)
+  {
+    for (int i = 0; i < fine; ++i)
+    {
+      const double x = ((i + 0.5) / fine - 0.5) * 2.0;
+      const double z = ((j + 0.5) / fine - 0.5) * 2.0;
+      // Stone: patches a few ice extents across, a finer mottle and single grains, so the ice
+      // has something to refract and the eye a scale.
+      const double at[3] = { x * halfSize / extent, 0.0, z * halfSize / extent };
+      const double coarse[3] = { 0.8 * at[0], 0.0, 0.8 * at[2] };
+      const double mottle[3] = { 9.0 * at[0], 0.0, 9.0 * at[2] };
+      const double grain = vtkIceNoise::Uniform(31, static_cast<std::uint32_t>(j * fine + i));
+      stone[static_cast<size_t>(j) * fine + i] = (1.0 +
+                                                   0.18 * vtkIceNoise::FractalNoise(coarse, 21) +
+                                                   0.1 * vtkIceNoise::FractalNoise(mottle, 23)) *
+        (grain < 0.03 ? 0.8 : grain > 0.985 ? 1.15 : 1.0);
+    }
+  }
+  const std::vector<double> sharp = Blur(stone, fine, 0.8);
+  const std::vector<double> soft = Blur(stone, fine, 3.0);
+
   vtkNew<vtkImageData> rgba;
   rgba->SetDimensions(fine, fine, 1);
   rgba->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
@@ -260,27 +286,22 @@ vtkSmartPointer<vtkActor> MakeGround(
       const double r = std::sqrt(x * x + z * z);
       const double t = std::clamp((r - 0.35) / 0.6, 0.0, 1.0);
       const double fade = 1.0 - t * t * (3.0 - 2.0 * t);
-      // Stone: patches a few ice extents across, a finer mottle and single grains, so the ice
-      // has something to refract and the eye a scale.
-      const double at[3] = { x * halfSize / extent, 0.0, z * halfSize / extent };
-      const double coarse[3] = { 0.8 * at[0], 0.0, 0.8 * at[2] };
-      const double mottle[3] = { 9.0 * at[0], 0.0, 9.0 * at[2] };
-      const double grain = vtkIceNoise::Uniform(31, static_cast<std::uint32_t>(j * fine + i));
-      const double stone = (1.0 + 0.18 * vtkIceNoise::FractalNoise(coarse, 21) +
-                             0.1 * vtkIceNoise::FractalNoise(mottle, 23)) *
-        (grain < 0.03 ? 0.8 : grain > 0.985 ? 1.15 : 1.0);
+      // Sharp within an extent of the ice's centre, fully soft from three on.
+      const double focus = std::clamp((r * halfSize / extent - 1.0) / 2.0, 0.0, 1.0);
+      const size_t k = static_cast<size_t>(j) * fine + i;
+      const double stoneHere = sharp[k] + focus * (soft[k] - sharp[k]);
       // Wet ground is darker: the water film lets less of the light the stone scatters out, and
       // mirrors the surroundings instead (an eighth of them at the camera's glancing view), less
       // where the ice hides them: the sheen must not wash out the contact shadow.
       const double shadowed = shadowAt(i, j, 0);
       const double wet = shadowAt(i, j, 1);
       const double shade =
-        (1.0 - strength * shadowed) * (1.0 - 0.5 * wet) + caustic * shadowAt(i, j, 2);
+        (1.0 - strength * shadowed) * (1.0 - 0.6 * wet) + caustic * shadowAt(i, j, 2);
       const double mirrored = 0.12 * wet * (1.0 - shadowed);
       for (int c = 0; c < 3; ++c)
       {
         texel[c] = static_cast<unsigned char>(std::lround(
-          255.0 * std::clamp(colour[c] * stone * shade + mirrored * sheen[c], 0.0, 1.0)));
+          255.0 * std::clamp(colour[c] * stoneHere * shade + mirrored * sheen[c], 0.0, 1.0)));
       }
       texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade));
     }
