@@ -526,7 +526,8 @@ void vtkIceMapper::AddFrameInputParts(vtkIceShaderParts& parts)
     return std::string("\n#ifdef ") + input + "\n" + code + "\n#endif\n";
   };
   parts.FragmentFunctions += guarded("ICE_FRAME_BACK_NORMALS", Get(vtkIceBackNormalsFS, "Dec")) +
-    guarded("ICE_FRAME_EXIT_POINT", Get(vtkIceExitPointFS, "Dec")) +
+    guarded("ICE_FRAME_EXIT_POINT",
+      Get(vtkIceExitPointFS, "Exit") + Get(vtkIceExitPointFS, "Dec")) +
     guarded("ICE_FRAME_TWO_SIDED", Get(vtkIceTwoSidedFS, "Dec")) +
     guarded("ICE_FRAME_DEPTH_DEBUG", Get(vtkIceDebugDepthFS, "Dec"));
   parts.Hooks.emplace_back(

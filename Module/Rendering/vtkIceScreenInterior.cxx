@@ -7,6 +7,7 @@
 #include "vtkIceMapper.h"
 #include "vtkIceOptics.h"
 #include "vtkIceDepthIntervalFS.h"
+#include "vtkIceExitPointFS.h"
 #include "vtkIceScreenInteriorFS.h"
 #include "vtkIceScreenRegion.h"
 #include "vtkIceShaderSections.h"
@@ -46,7 +47,7 @@ std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
     Get(vtkIceDepthIntervalFS, "Normal") +
     Get(vtkIceScreenInteriorFS, "Tiles") + vtkIceInteriorTable::Declarations() +
     vtkIceInteriorTable::Functions(complexity, renderer->GetLightingCount()) +
-    Get(vtkIceScreenInteriorFS, "Dec");
+    Get(vtkIceScreenInteriorFS, "Dec") + Get(vtkIceExitPointFS, "Exit");
   std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
   vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", declarations);
   vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", Get(vtkIceScreenInteriorFS, "Impl"));

@@ -300,11 +300,13 @@ struct Scene
     }
     if (this->Core.Density > 0.0 && through)
     {
-      // The screen-space interior: the core along the refracted ray, over the eye ray's chord.
+      // The screen-space interior: the core along the refracted ray, to where it leaves.
       const dvec3 inside = ref::Refract(e, nFront, this->Material.RefractionRatio);
+      double length;
+      const bool leaves = hit(position, inside, epsilon, length, unused, unusedFace);
       const double cover = 1.0 -
         std::exp(-ref::CoreOpticalDepth((position - this->Core.Center) * this->Core.Scale,
-          inside * this->Core.Scale, chord, this->Core.Density));
+          inside * this->Core.Scale, leaves ? length : chord, this->Core.Density));
       colour = colour * (1.0 - cover) + this->Core.Colour * cover;
     }
     colour *= 255.0;

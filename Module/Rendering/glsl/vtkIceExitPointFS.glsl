@@ -1,10 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-//ICE::Dec
-// Two-sided refraction through the exit point (TwoSidedExitPoint), beyond the paper's eq 1: the
-// eye ray is refracted at the front surface (eq 2), followed through the ice to where it leaves,
-// found in image space from the back faces' view depth, and refracted again there, ice to air.
-// Mirrored on the CPU by vtkIceOpticsReference::ExitPointDirection: change both together.
+//ICE::Exit
+// Where a ray inside the ice leaves it, found in image space from the back faces' view depth
+// (vtkIceBackfaceNormalPass's target, iceBackNormals): for TwoSidedExitPoint's exit and for the
+// length of the screen-space interior's refracted ray.
 uniform mat4 iceWCDCMatrix; // world to normalised device coordinates
 
 // The back-face texel under the point whose clip coordinates are `clip`.
@@ -15,26 +14,17 @@ vec4 iceBackUnder(vec4 clip)
   return texelFetch(iceBackNormals, clamp(ivec2(floor(window)), ivec2(0), size - 1), 0);
 }
 
-// The direction leaving the ice for the eye vector e meeting its front surface at positionWC
-// with normal nFront; eta = n_air / n_ice. The distance s along the refracted ray t starts as the
-// straight-through thickness under this pixel and is corrected a few times: s grows by how far
+// The distance along the unit ray t from positionWC (on a front face) to the back face it
+// leaves through, backHere the back texel under positionWC (its alpha > 0). It starts as the
+// straight-through thickness under this pixel and is corrected a few times: it grows by how far
 // the back face under the current exit estimate lies beyond it in view depth (the back face taken
-// as locally facing the camera). At the exit, t refracts about the back normal with 1 / eta;
-// where it cannot (total internal reflection) it is reflected back into the ice and leaves as is.
-// s, the path from the front to the exit point, is handed out for the absorption.
-vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4 backHere,
-  out float s)
+// as locally facing the camera). `back` receives the back texel at the exit.
+float iceExitDistance(vec3 positionWC, vec3 t, vec4 backHere, out vec4 back)
 {
-  vec3 t = iceRefract(e, nFront, eta);
-  s = 0.0;
-  if (backHere.a <= 0.0)
-  {
-    return t;
-  }
   float depthPerDistance = max(dot(t, iceViewDirectionWC), 0.05);
   float frontDepth = dot(positionWC - iceCameraWC, iceViewDirectionWC);
-  s = max(backHere.a - frontDepth, 0.0) / depthPerDistance;
-  vec4 back = backHere;
+  float s = max(backHere.a - frontDepth, 0.0) / depthPerDistance;
+  back = backHere;
   // Clip coordinates are linear along the ray: two products instead of one per step.
   vec4 clipStart = iceWCDCMatrix * vec4(positionWC, 1.0);
   vec4 clipStep = iceWCDCMatrix * vec4(t, 0.0);
@@ -49,6 +39,30 @@ vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4
     back = under;
     s = max(s + (back.a - dot(exitPoint - iceCameraWC, iceViewDirectionWC)) / depthPerDistance, 0.0);
   }
+  return s;
+}
+//ICE::Dec
+// Two-sided refraction through the exit point (TwoSidedExitPoint), beyond the paper's eq 1: the
+// eye ray is refracted at the front surface (eq 2), followed through the ice to where it leaves
+// (iceExitDistance), and refracted again there, ice to air.
+// Mirrored on the CPU by vtkIceOpticsReference::ExitPointDirection: change both together.
+
+// The direction leaving the ice for the eye vector e meeting its front surface at positionWC
+// with normal nFront; eta = n_air / n_ice. At the exit, the refracted ray t refracts about the
+// back normal with 1 / eta; where it cannot (total internal reflection) it is reflected back into
+// the ice and leaves as is. s, the path from the front to the exit point, is handed out for the
+// absorption.
+vec3 iceExitPointDirection(vec3 e, vec3 positionWC, vec3 nFront, float eta, vec4 backHere,
+  out float s)
+{
+  vec3 t = iceRefract(e, nFront, eta);
+  s = 0.0;
+  if (backHere.a <= 0.0)
+  {
+    return t;
+  }
+  vec4 back;
+  s = iceExitDistance(positionWC, t, backHere, back);
   return iceRefract(t, -normalize(back.rgb), 1.0 / eta);
 }
 //ICE::Impl

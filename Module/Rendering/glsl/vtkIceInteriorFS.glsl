@@ -57,11 +57,12 @@ vec3 iceCellRandom(ivec3 c)
 }
 
 // Where the bubbles gather, u in the core's frame: 1 at its centre, thinning gradually outwards
-// along a rounded cube (ice freezes from its faces inwards, pushing the air to the middle).
+// as the core's cloud does (ice freezes from its faces inwards, pushing the air to the middle).
+// A Gaussian, as the cloud: a rounded cube's steeper edge (exp(-sum u^4)) showed through the
+// faces as the outline of a second, smaller block inside the ice.
 float iceBubbleProfile(vec3 u)
 {
-  vec3 a = u * u;
-  return exp(-dot(a, a));
+  return exp(-dot(u, u));
 }
 
 //ICE::Bubbles
@@ -169,8 +170,8 @@ vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
 // `viewDepth` in front of the camera) up to the nearest back face at view depth `backDepth`
 // (0: none), as vec4(add, keep) (iceInteriorOver).
-vec4 iceInteriorAlong(
-  vec3 positionWC, vec3 positionMC, vec3 normalWC, float viewDepth, float backDepth)
+vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 normalWC, float viewDepth,
+  float backDepth, float cloudLength)
 {
   vec4 t = vec4(0.0, 0.0, 0.0, 1.0);
   vec3 e = iceEyeVectorWC(positionWC);
@@ -183,14 +184,17 @@ vec4 iceInteriorAlong(
   // The ray in model coordinates: s runs over world units from the front to the back face.
   vec3 o = positionMC;
   vec3 d = mat3(iceWCMCMatrix) * e;
-  // The cloud and its bubbles are seen along the ray refracted at the front face (normalWC),
-  // over the eye ray's length in the ice: through a face seen at a slant they show where the
-  // light that reaches the eye crossed the ice, not behind the face's outline. The cracks and air
-  // planes keep the eye ray, as the paper's passes draw them.
+  // The cloud and its bubbles are seen along the ray refracted at the front face (normalWC), up
+  // to where it leaves (cloudLength, from the back faces; the eye ray's length where that is not
+  // known): through a face seen at a slant they show where the light that reaches the eye
+  // crossed the ice, not behind the face's outline, and not cut where the eye ray would leave
+  // through a nearer side. The cracks and air planes keep the eye ray, as the paper's passes
+  // draw them.
   vec3 refracted = iceRefract(e, dot(normalWC, e) < 0.0 ? normalWC : -normalWC,
     iceRefractionRatio);
   vec3 dCloud = mat3(iceWCMCMatrix) * refracted;
   float alongCloud = dot(refracted, iceViewDirectionWC);
+  float sCloud = cloudLength > 0.0 ? cloudLength : sBack;
 
   // The milky core behind the air: the air planes in front of it are seen through less of it.
   vec3 coreOrigin = (o - iceCoreCenter) * iceCoreScale;
@@ -198,7 +202,7 @@ vec4 iceInteriorAlong(
   vec3 coreDirectionEye = d * iceCoreScale;
   if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
   {
-    float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sBack, iceCoreDensity);
+    float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sCloud, iceCoreDensity);
     iceInteriorOver(t, ICE_CORE_COLOUR, iceMilkyCoreCover(depth));
   }
   // The loop runs the same number of times for every fragment, and every step samples the atlas:
@@ -223,7 +227,7 @@ vec4 iceInteriorAlong(
   }
 
   // The bubbles in front of the core's cloud and the air planes they lie in.
-  vec4 bubbles = iceBubbles(o, dCloud, sBack, coreOrigin, coreDirection, viewDepth, alongCloud);
+  vec4 bubbles = iceBubbles(o, dCloud, sCloud, coreOrigin, coreDirection, viewDepth, alongCloud);
   t = vec4(bubbles.rgb + bubbles.a * t.rgb, bubbles.a * t.a);
 
   // Cracks: only the nearest is shaded, once: its mirror hides what lies behind it where it

@@ -69,5 +69,14 @@ uniform sampler2D iceNearestFront;
   float widthSlope = (widthB - widthA) / (depthB - depthA);
   icePixelFootprint = vec2(widthA - depthA * widthSlope, widthSlope);
   vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
-  gl_FragData[0] = iceInteriorAlong(positionWC, positionMC, iceDecodeNormal(frontTexel.ba), front,
-    texelFetch(iceBackNormals, texel, 0).a);
+  vec3 normalWC = iceDecodeNormal(frontTexel.ba);
+  vec4 backHere = texelFetch(iceBackNormals, texel, 0);
+  // The refracted ray's own length in the ice, for the cloud and the bubbles along it.
+  vec3 eyeWC = iceEyeVectorWC(positionWC);
+  vec3 refractedWC = iceRefract(
+    eyeWC, dot(normalWC, eyeWC) < 0.0 ? normalWC : -normalWC, iceRefractionRatio);
+  vec4 exitTexel;
+  float cloudLength =
+    backHere.a > 0.0 ? iceExitDistance(positionWC, refractedWC, backHere, exitTexel) : 0.0;
+  gl_FragData[0] =
+    iceInteriorAlong(positionWC, positionMC, normalWC, front, backHere.a, cloudLength);
