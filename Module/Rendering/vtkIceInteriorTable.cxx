@@ -370,15 +370,24 @@ void vtkIceInteriorTable::MakeBump(vtkOpenGLRenderWindow* window)
 //------------------------------------------------------------------------------
 void vtkIceInteriorTable::PrepareTraceAir(vtkRenderer* renderer, vtkPolyData* ice,
   vtkIceProperty* look, const Placement& placement, vtkShaderProgram* program,
-  vtkTextureObject* active[3])
+  vtkTextureObject* active[4], vtkTexture* atlas)
 {
   this->PrepareCracks(renderer, ice, look, placement, program, active);
   this->MakeBump(static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow()));
   this->Bump->Activate();
   active[2] = this->Bump;
-  // No air planes along the trace: the atlas sampler on a 2D texture's unit (see SetUniforms).
-  program->SetUniformi("iceAirAtlas", this->Table->GetTextureUnit());
-  program->SetUniformi("iceAirCount", 0);
+  // Without air planes the atlas sampler sits on a 2D texture's unit (see SetUniforms).
+  vtkTextureObject* images = nullptr;
+  if (atlas && this->AirPlanes > 0)
+  {
+    atlas->Render(renderer);
+    images = static_cast<vtkOpenGLTexture*>(atlas)->GetTextureObject();
+  }
+  active[3] = images;
+  program->SetUniformi(
+    "iceAirAtlas", images ? images->GetTextureUnit() : this->Table->GetTextureUnit());
+  program->SetUniformi("iceAirCount", images ? this->AirPlanes : 0);
+  program->SetUniformf("iceMilkiness", static_cast<float>(look->GetMilkiness()));
   program->SetUniformi("iceInteriorDebug", 0);
   this->SetBubbleUniforms(program, look);
 }

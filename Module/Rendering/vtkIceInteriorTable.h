@@ -59,9 +59,12 @@ public:
   void PrepareCracks(vtkRenderer* renderer, vtkPolyData* ice, vtkIceProperty* look,
     const Placement& placement, vtkShaderProgram* program, vtkTextureObject* active[2]);
   // The same with the bubbles and the core they gather in (uniforms and the bump texture they
-  // read, `active[2]`), for the trace's bubbles on the segments after a reflection inside.
+  // read, `active[2]`), for the trace's bubbles on the segments after a reflection inside; with
+  // `atlas` (the air planes' bubble images) also the air planes (`active[3]`: the atlas's
+  // texture), none without it.
   void PrepareTraceAir(vtkRenderer* renderer, vtkPolyData* ice, vtkIceProperty* look,
-    const Placement& placement, vtkShaderProgram* program, vtkTextureObject* active[3]);
+    const Placement& placement, vtkShaderProgram* program, vtkTextureObject* active[4],
+    vtkTexture* atlas);
   // The interior's own uniforms (the screen-space step sets the matrices it reads).
   void SetUniforms(vtkShaderProgram* program);
   // After the draw: the textures deactivated.

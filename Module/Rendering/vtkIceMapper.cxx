@@ -56,7 +56,8 @@ enum ShaderParts
   RoughPart = 64,
   TracePart = 128,
   TraceCracksPart = 256,
-  TraceBubblesPart = 512
+  TraceBubblesPart = 512,
+  TraceAirPart = 1024
 };
 
 }
@@ -250,6 +251,10 @@ int vtkIceMapper::ShaderVariant() const
   if (this->TracesBubbles())
   {
     variant |= TraceBubblesPart;
+  }
+  if (this->TracesAir())
+  {
+    variant |= TraceAirPart;
   }
   return variant;
 }
@@ -491,11 +496,14 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   {
     // With the exit point's frame inputs only: it replaces that estimate's light.
     // The cracks on the segments after a reflection inside: their search before the trace.
-    // The bubbles need the interior's declarations whole (its uniforms, noise, grid walk).
+    // The bubbles and the air planes need the interior's declarations whole (its uniforms,
+    // noise, grid walk, air atlas).
     std::string cracks = (variant & TraceCracksPart) ? "#define ICE_TRACE_CRACKS\n" : "";
-    if (variant & TraceBubblesPart)
+    if (variant & (TraceBubblesPart | TraceAirPart))
     {
-      cracks += "#define ICE_TRACE_BUBBLES\n" + vtkIceInteriorTable::Declarations();
+      cracks += std::string(variant & TraceBubblesPart ? "#define ICE_TRACE_BUBBLES\n" : "") +
+        (variant & TraceAirPart ? "#define ICE_TRACE_AIR\n" : "") +
+        vtkIceInteriorTable::Declarations();
     }
     else if (variant & TraceCracksPart)
     {
@@ -640,10 +648,11 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   program->SetUniformf("iceTraceOrientation", static_cast<float>(this->InputOrientation));
   program->SetUniformi("iceTraceAntiAliasing", this->TraceAntiAliasing ? 1 : 0);
 
-  vtkTextureObject* active[5] = { nullptr, nullptr, nullptr, nullptr, nullptr };
+  vtkTextureObject* active[6] = { nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
   this->Trace->Activate(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act,
     this->MaxBounces, active);
-  if (program->IsUniformUsed("iceTraceCrackShare") || program->IsUniformUsed("iceBubbleCell"))
+  if (program->IsUniformUsed("iceTraceCrackShare") || program->IsUniformUsed("iceBubbleCell") ||
+    program->IsUniformUsed("iceAirCount"))
   {
     this->PrepareTraceInterior(ren, program, active + 2);
   }

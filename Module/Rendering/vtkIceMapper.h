@@ -362,7 +362,8 @@ protected:
   // (the crack table and grid, the bubbles' noise: `active`, three at most).
   bool TracesCracks() const;
   bool TracesBubbles() const;
-  void PrepareTraceInterior(vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[3]);
+  bool TracesAir() const;
+  void PrepareTraceInterior(vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[4]);
   int InteriorMethod = InteriorScreenSpace;
   int DebugView = DebugOff;
   bool WarnWithoutEnvironment = true;

@@ -138,16 +138,25 @@ bool vtkIceMapper::TracesBubbles() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkIceMapper::TracesAir() const
+{
+  return this->TracesInterior() && this->InteriorMethod == InteriorScreenSpace &&
+    this->DebugView == DebugOff && !this->InputFlat &&
+    this->IceProperty->GetNumberOfAirPlanes() > 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkIceMapper::PrepareTraceInterior(
-  vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[3])
+  vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[4])
 {
   vtkIceInteriorTable::Placement placement;
   this->GetLookBounds(placement.Bounds);
   PlaceInterior(placement, this->InputExtent(), this->DebugView, this->InputFlat);
-  if (program->IsUniformUsed("iceBubbleCell"))
+  if (program->IsUniformUsed("iceBubbleCell") || program->IsUniformUsed("iceAirCount"))
   {
-    this->InteriorTable->PrepareTraceAir(
-      ren, this->PreparedInput, this->IceProperty, placement, program, active);
+    this->InteriorTable->PrepareTraceAir(ren, this->PreparedInput, this->IceProperty, placement,
+      program, active,
+      this->TracesAir() ? this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()) : nullptr);
   }
   else
   {

@@ -33,6 +33,7 @@
 //              path a pixel is
 #include "IceTestResources.h"
 #include "IceTestUtilities.h"
+#include "vtkIceAirGeometry.h"
 #include "vtkIceBlockSource.h"
 #include "vtkIceCrackTable.h"
 #include "vtkIceCubeMapSource.h"
@@ -612,6 +613,152 @@ bool Bubbles()
     ok;
 }
 
+// Whether the segment p + s d, 0 < s < length, crosses one of the air planes (the squares
+// [-1, 1]^2 of their placements).
+bool CrossesAir(const std::vector<vtkSmartPointer<vtkTransform>>& planes, const dvec3& p,
+  const dvec3& d, double length)
+{
+  for (const auto& plane : planes)
+  {
+    vtkNew<vtkTransform> local;
+    local->DeepCopy(plane);
+    local->Inverse();
+    double a[3];
+    double b[3];
+    const dvec3 q = p + length * d;
+    local->TransformPoint(&p.x, a);
+    local->TransformPoint(&q.x, b);
+    if ((a[2] > 0.0) == (b[2] > 0.0))
+    {
+      continue;
+    }
+    const double f = a[2] / (a[2] - b[2]);
+    if (std::abs(a[0] + f * (b[0] - a[0])) <= 1.0 && std::abs(a[1] + f * (b[1] - a[1])) <= 1.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The air planes along the traced path: where the eye ray crosses none (the screen-space
+// interior draws them there) but the segment after a total reflection inside does, the picture
+// shows their bubbles; where no segment of the path crosses one, it is the air-free reference.
+bool Air()
+{
+  const double camera[3] = { 2.6, 2.2, 2.9 };
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  Scene scene(cube, camera);
+  const int bounces = 6;
+  scene.Mapper->SetMaxBounces(bounces);
+  vtkIceProperty* look = scene.Mapper->GetIceProperty();
+  look->SetNumberOfAirPlanes(3); // a few, so that some paths miss them all
+  look->SetMilkiness(1.0);
+  double bounds[6];
+  cube->GetBounds(bounds);
+  std::vector<vtkSmartPointer<vtkTransform>> planes;
+  for (int i = 0; i < look->GetNumberOfAirPlanes(); ++i)
+  {
+    planes.push_back(vtkSmartPointer<vtkTransform>::New());
+    vtkIceAirGeometry::Placement(look->GetAirSeed(), i, bounds, planes.back());
+  }
+  const IceTest::Image image = scene.Render();
+  bool ok =
+    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "airy cube: no OpenGL error");
+  const double eta = scene.Material.RefractionRatio;
+  const double epsilon = 1.0e-5 * scene.WorldTree->GetDiagonal();
+  size_t crossing = 0;
+  size_t differing = 0;
+  std::vector<double> clearErrors;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      dvec3 reference;
+      if (!scene.Reference(x, y, reference))
+      {
+        continue;
+      }
+      double o[3];
+      double v[3];
+      IceTest::PixelRay(scene.Renderer, x, y, o, v);
+      const dvec3 e = glm::normalize(dvec3(v[0], v[1], v[2]));
+      double t;
+      double n[3];
+      double f[3];
+      scene.WorldTree->Intersect(o, &e.x, 0.0, 1.0e30, t, n);
+      dvec3 nFront = glm::normalize(dvec3(n[0], n[1], n[2]));
+      nFront = glm::dot(nFront, e) > 0.0 ? -nFront : nFront;
+      const dvec3 entry = dvec3(o[0], o[1], o[2]) + t * e;
+      double chord;
+      if (!scene.WorldTree->Intersect(&entry.x, &e.x, epsilon, 1.0e30, chord, n, f,
+            scene.Orientation) ||
+        CrossesAir(planes, entry, e, chord))
+      {
+        continue;
+      }
+      // The path as the trace follows it: refracted in, then reflected at every hit.
+      dvec3 p = entry;
+      dvec3 d = ref::Refract(e, nFront, eta);
+      bool secondCrosses = false;
+      bool laterCrosses = false;
+      bool totalAtFirst = false;
+      bool whole = true;
+      for (int bounce = 1; bounce <= bounces; ++bounce)
+      {
+        double length;
+        if (!scene.WorldTree->Intersect(&p.x, &d.x, epsilon, 1.0e30, length, n, f,
+              scene.Orientation))
+        {
+          whole = false;
+          break;
+        }
+        if (bounce > 1 && CrossesAir(planes, p, d, length))
+        {
+          (bounce == 2 ? secondCrosses : laterCrosses) = true;
+        }
+        dvec3 normal = glm::normalize(dvec3(n[0], n[1], n[2]));
+        normal = glm::dot(normal, d) < 0.0 ? -normal : normal;
+        if (bounce == 1)
+        {
+          totalAtFirst = ref::DielectricReflectance(glm::dot(d, normal), 1.0 / eta) >= 1.0;
+        }
+        p += length * d;
+        d = ref::Reflect(d, normal);
+      }
+      if (!whole)
+      {
+        continue;
+      }
+      double change = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        change = std::max(change, std::abs(image.At(x, y)[i] - std::min(255.0, reference[i])));
+      }
+      if (secondCrosses && totalAtFirst)
+      {
+        ++crossing;
+        differing += change > 16.0 ? 1 : 0;
+      }
+      else if (!secondCrosses && !laterCrosses)
+      {
+        clearErrors.push_back(change);
+      }
+    }
+  }
+  ok = IceTest::Expect(crossing > 300 && differing > crossing / 10,
+         "airy cube: " + std::to_string(differing) + " of the " + std::to_string(crossing) +
+           " pixels whose eye ray crosses no air plane and whose segment after a total "
+           "reflection does show their bubbles") &&
+    ok;
+  const IceTest::Stats clear = IceTest::Summarize(clearErrors);
+  return IceTest::Expect(clearErrors.size() > 300 && clear.Mean < 1.5,
+           "airy cube: the " + std::to_string(clearErrors.size()) +
+             " pixels whose path crosses no air plane agree with the air-free reference: mean " +
+             std::to_string(clear.Mean) + "/255") &&
+    ok;
+}
+
 bool AntiAliased()
 {
   const double camera[3] = { 2.6, 2.2, 2.9 };
@@ -719,5 +866,6 @@ int TestIceTrace(int argc, char* argv[])
           return AgainstReference("cube with a milky core", Cube(), corner, 6, false, false, true);
         } },
       { "multisampled", Multisampled }, { "cracks", Cracks }, { "bubbles", Bubbles },
+      { "air", Air },
       { "antialiased", AntiAliased } });
 }

@@ -29,8 +29,8 @@ uniform vec3 iceTraceCoreColour;
 #ifdef ICE_TRACE_BUBBLES
 // The bubbles (vtkIceInteriorFS.glsl's iceBubbles, declared before this) on the first segment
 // after a reflection inside, where a face that reflects totally shows the core's bubbles, and
-// only within this distance of the core's centre in its frame (iceBubbleProfile is 6 % at the
-// corners of that ball's cube): the grid's walk is the cost. Later segments carry little light.
+// only within this distance of the core's centre in its frame (iceBubbleProfile is 6 % there):
+// the grid's walk is the cost. Later segments carry little light.
 const float iceTraceBubbleReach = 1.7;
 #endif
 #ifdef ICE_TRACE_CRACKS
@@ -231,7 +231,8 @@ vec2 iceTraceSampleOffset(int k)
 // the environment; at the last hit all that is left leaves (refracted, or reflected where it
 // cannot), as does a ray that meets no triangle or one with less than iceTraceCutoff left.
 // Absorbed along every segment. withBubbles: whether the bubbles show on the segment after the
-// first reflection inside (the extra paths of TraceAntiAliasing leave them to the centre's).
+// first reflection inside, and the air planes on every segment after it (the extra paths of
+// TraceAntiAliasing leave them to the centre's).
 vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool withBubbles)
 {
   vec3 d = iceRefract(e, nFront, eta);
@@ -289,6 +290,31 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool w
       light += throughput * cover * iceTraceCoreColour;
       throughput *= 1.0 - cover;
     }
+#ifdef ICE_TRACE_AIR
+    if (bounce > 1 && withBubbles)
+    {
+      // The air planes (the interior's records after the cracks) the segment crosses, as the
+      // screen-space interior draws them on the first: their bubble image, at the atlas's
+      // sharpest level (no derivatives along a traced path), behind the ice before them.
+      vec3 pModel = (iceTraceWCMC * vec4(p, 1.0)).xyz;
+      for (int k = 0; k < iceAirCount; ++k)
+      {
+        IceLocalRay ray = iceLocalRay(iceCrackCount + k, pModel, dModel);
+        float s = -ray.origin.z / ray.direction.z;
+        vec2 xy = ray.origin.xy + s * ray.direction.xy;
+        if (s > 0.0 && s < t && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0)
+        {
+          vec4 layer = iceAirLayer(
+            textureLod(iceAirAtlas, ray.shape.xy + 0.01 + 0.24 * (xy + 1.0), 0.0), iceMilkiness,
+            false);
+          vec3 reaching = throughput * iceTransmittance(s, iceAttenuationColor,
+                                         iceInverseAttenuationDistance * iceAbsorptionPower);
+          light += reaching * layer.a * layer.rgb;
+          throughput *= 1.0 - layer.a;
+        }
+      }
+    }
+#endif
 #ifdef ICE_TRACE_CRACKS
     if (bounce > 1)
     {
