@@ -363,7 +363,8 @@ protected:
   bool TracesCracks() const;
   bool TracesBubbles() const;
   bool TracesAir() const;
-  void PrepareTraceInterior(vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[4]);
+  void PrepareTraceInterior(
+    vtkRenderer* ren, vtkShaderProgram* program, vtkTextureObject* active[4]);
   int InteriorMethod = InteriorScreenSpace;
   int DebugView = DebugOff;
   bool WarnWithoutEnvironment = true;

@@ -43,7 +43,8 @@ IceTest::Stats CompareWithReference(
         vtkIceOpticsReference::EyePathLength(e, viewDirection, frontDepth, backDepth),
         AttenuationColor, 1.0 / AttenuationDistance);
       const unsigned char* behind = scene.Background.At(x, y);
-      return glm::dvec3(behind[0], behind[1], behind[2]) * glm::pow(transmittance, glm::dvec3(power));
+      return glm::dvec3(behind[0], behind[1], behind[2]) *
+        glm::pow(transmittance, glm::dvec3(power));
     });
 }
 }

@@ -67,6 +67,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -517,6 +518,98 @@ double Closest(const dvec3& p, const dvec3& d, double length, const dvec3& centr
   return glm::length(u + s * du);
 }
 
+// Where pixel (x, y)'s eye ray e enters the ice (entry, the front normal facing it) and its
+// chord through the ice to the next face.
+struct EyeEntry
+{
+  dvec3 E;
+  dvec3 Entry;
+  dvec3 Front;
+  double Chord = 0.0;
+  bool Through = false;
+};
+
+EyeEntry Enter(Scene& scene, int x, int y, double epsilon)
+{
+  EyeEntry eye;
+  double o[3];
+  double v[3];
+  IceTest::PixelRay(scene.Renderer, x, y, o, v);
+  eye.E = glm::normalize(dvec3(v[0], v[1], v[2]));
+  double t;
+  double n[3];
+  double f[3];
+  scene.WorldTree->Intersect(o, &eye.E.x, 0.0, 1.0e30, t, n);
+  eye.Front = glm::normalize(dvec3(n[0], n[1], n[2]));
+  eye.Front = glm::dot(eye.Front, eye.E) > 0.0 ? -eye.Front : eye.Front;
+  eye.Entry = dvec3(o[0], o[1], o[2]) + t * eye.E;
+  eye.Through = scene.WorldTree->Intersect(
+    &eye.Entry.x, &eye.E.x, epsilon, 1.0e30, eye.Chord, n, f, scene.Orientation);
+  return eye;
+}
+
+// What a pixel's path shows of a part of the interior seen along the trace (TracedPart).
+enum class Seen
+{
+  Other,    // left out
+  Crossing, // only the trace can show the part: the picture must differ from the reference
+  Clear     // the path misses it: the picture must be the part-free reference
+};
+
+// Renders `scene` (whose CPU reference leaves the part out) and holds it to the reference pixel
+// by pixel as `classify` sorts the pixels: of the Crossing ones more than 1/`share` differ by
+// more than 16/255, the Clear ones agree within 1.5/255 on average; at least 300 of each.
+bool TracedPart(Scene& scene, const std::string& name, int share, const std::string& crossingWhat,
+  const std::string& clearWhat,
+  const std::function<Seen(const EyeEntry& eye, double epsilon)>& classify)
+{
+  const IceTest::Image image = scene.Render();
+  bool ok =
+    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), name + ": no OpenGL error");
+  const double epsilon = 1.0e-5 * scene.WorldTree->GetDiagonal();
+  size_t crossing = 0;
+  size_t differing = 0;
+  std::vector<double> clearErrors;
+  for (int y = 0; y < image.Height; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      dvec3 reference;
+      if (!scene.Reference(x, y, reference))
+      {
+        continue;
+      }
+      const Seen seen = classify(Enter(scene, x, y, epsilon), epsilon);
+      double change = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        change = std::max(change, std::abs(image.At(x, y)[i] - std::min(255.0, reference[i])));
+      }
+      if (seen == Seen::Crossing)
+      {
+        ++crossing;
+        differing += change > 16.0 ? 1 : 0;
+      }
+      else if (seen == Seen::Clear)
+      {
+        clearErrors.push_back(change);
+      }
+    }
+  }
+  ok = IceTest::Expect(crossing > 300 && differing > crossing / share,
+         name + ": " + std::to_string(differing) + " of the " + std::to_string(crossing) +
+           " pixels " + crossingWhat) &&
+    ok;
+  const IceTest::Stats clear = IceTest::Summarize(clearErrors);
+  return IceTest::Expect(clearErrors.size() > 300 && clear.Mean < 1.5,
+           name + ": the " + std::to_string(clearErrors.size()) + " pixels " + clearWhat +
+             ": mean " + std::to_string(clear.Mean) + "/255") &&
+    ok;
+}
+
+// The bubbles along the traced path: pixels whose second segment alone, after a total
+// reflection, crosses the bubbles' middle show them; those whose two segments stay clear of them
+// are the bubble-free reference.
 bool Bubbles()
 {
   const double camera[3] = { 2.6, 2.2, 2.9 };
@@ -534,83 +627,42 @@ bool Bubbles()
   vtkIceInteriorLook::CoreFrame(bounds, vtkIceInteriorLook::BubbleCoreRadius, c, k);
   const dvec3 centre(c[0], c[1], c[2]);
   const dvec3 scale(k[0], k[1], k[2]);
-  const IceTest::Image image = scene.Render();
-  bool ok =
-    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "bubbly cube: no OpenGL error");
   const double eta = scene.Material.RefractionRatio;
-  const double epsilon = 1.0e-5 * scene.WorldTree->GetDiagonal();
-  size_t crossing = 0;
-  size_t differing = 0;
-  std::vector<double> clearErrors;
-  for (int y = 0; y < image.Height; ++y)
-  {
-    for (int x = 0; x < image.Width; ++x)
-    {
-      dvec3 reference;
-      if (!scene.Reference(x, y, reference))
-      {
-        continue;
-      }
+  return TracedPart(scene, "bubbly cube", 5,
+    "whose second segment alone crosses the bubbles' middle show them",
+    "whose two segments stay clear of them agree with the bubble-free reference",
+    [&](const EyeEntry& eye, double epsilon) {
       // The first two segments, as the trace follows them.
-      double o[3];
-      double v[3];
-      IceTest::PixelRay(scene.Renderer, x, y, o, v);
-      const dvec3 e = glm::normalize(dvec3(v[0], v[1], v[2]));
-      double t;
       double n[3];
       double f[3];
-      scene.WorldTree->Intersect(o, &e.x, 0.0, 1.0e30, t, n);
-      dvec3 nFront = glm::normalize(dvec3(n[0], n[1], n[2]));
-      nFront = glm::dot(nFront, e) > 0.0 ? -nFront : nFront;
-      const dvec3 entry = dvec3(o[0], o[1], o[2]) + t * e;
-      double chord;
-      scene.WorldTree->Intersect(&entry.x, &e.x, epsilon, 1.0e30, chord, n, f, scene.Orientation);
-      const dvec3 d1 = ref::Refract(e, nFront, eta);
+      const dvec3 d1 = ref::Refract(eye.E, eye.Front, eta);
       double t1;
-      if (!scene.WorldTree->Intersect(&entry.x, &d1.x, epsilon, 1.0e30, t1, n, f, scene.Orientation))
+      if (!scene.WorldTree->Intersect(
+            &eye.Entry.x, &d1.x, epsilon, 1.0e30, t1, n, f, scene.Orientation))
       {
-        continue;
+        return Seen::Other;
       }
       dvec3 n1 = glm::normalize(dvec3(n[0], n[1], n[2]));
       n1 = glm::dot(n1, d1) < 0.0 ? -n1 : n1;
-      const dvec3 p1 = entry + t1 * d1;
+      const dvec3 p1 = eye.Entry + t1 * d1;
       const dvec3 d2 = ref::Reflect(d1, n1);
       double t2;
       if (!scene.WorldTree->Intersect(&p1.x, &d2.x, epsilon, 1.0e30, t2, n, f, scene.Orientation))
       {
-        continue;
+        return Seen::Other;
       }
       // The screen-space interior shows the bubbles along the first segment over the longer of
       // the eye ray's chord and the refracted ray's path.
-      const bool firstClear = Closest(entry, d1, std::max(t1, chord), centre, scale) > 2.0;
+      const bool firstClear =
+        Closest(eye.Entry, d1, std::max(t1, eye.Chord), centre, scale) > 2.0;
       const double second = Closest(p1, d2, t2, centre, scale);
-      double change = 0.0;
-      for (int i = 0; i < 3; ++i)
-      {
-        change = std::max(change, std::abs(image.At(x, y)[i] - std::min(255.0, reference[i])));
-      }
       if (firstClear && second < 0.8 &&
         ref::DielectricReflectance(glm::dot(d1, n1), 1.0 / eta) >= 1.0)
       {
-        ++crossing;
-        differing += change > 16.0 ? 1 : 0;
+        return Seen::Crossing;
       }
-      else if (firstClear && second > 2.0)
-      {
-        clearErrors.push_back(change);
-      }
-    }
-  }
-  ok = IceTest::Expect(crossing > 300 && differing > crossing / 5,
-         "bubbly cube: " + std::to_string(differing) + " of the " + std::to_string(crossing) +
-           " pixels whose second segment alone crosses the bubbles' middle show them") &&
-    ok;
-  const IceTest::Stats clear = IceTest::Summarize(clearErrors);
-  return IceTest::Expect(clearErrors.size() > 300 && clear.Mean < 1.5,
-           "bubbly cube: the " + std::to_string(clearErrors.size()) +
-             " pixels whose two segments stay clear of them agree with the bubble-free reference: "
-             "mean " + std::to_string(clear.Mean) + "/255") &&
-    ok;
+      return firstClear && second > 2.0 ? Seen::Clear : Seen::Other;
+    });
 }
 
 // Whether the segment p + s d, 0 < s < length, crosses one of the air planes (the squares
@@ -662,56 +714,31 @@ bool Air()
     planes.push_back(vtkSmartPointer<vtkTransform>::New());
     vtkIceAirGeometry::Placement(look->GetAirSeed(), i, bounds, planes.back());
   }
-  const IceTest::Image image = scene.Render();
-  bool ok =
-    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "airy cube: no OpenGL error");
   const double eta = scene.Material.RefractionRatio;
-  const double epsilon = 1.0e-5 * scene.WorldTree->GetDiagonal();
-  size_t crossing = 0;
-  size_t differing = 0;
-  std::vector<double> clearErrors;
-  for (int y = 0; y < image.Height; ++y)
-  {
-    for (int x = 0; x < image.Width; ++x)
-    {
-      dvec3 reference;
-      if (!scene.Reference(x, y, reference))
+  return TracedPart(scene, "airy cube", 10,
+    "whose eye ray crosses no air plane and whose segment after a total reflection does show "
+    "their bubbles",
+    "whose path crosses no air plane agree with the air-free reference",
+    [&](const EyeEntry& eye, double epsilon) {
+      if (!eye.Through || CrossesAir(planes, eye.Entry, eye.E, eye.Chord))
       {
-        continue;
-      }
-      double o[3];
-      double v[3];
-      IceTest::PixelRay(scene.Renderer, x, y, o, v);
-      const dvec3 e = glm::normalize(dvec3(v[0], v[1], v[2]));
-      double t;
-      double n[3];
-      double f[3];
-      scene.WorldTree->Intersect(o, &e.x, 0.0, 1.0e30, t, n);
-      dvec3 nFront = glm::normalize(dvec3(n[0], n[1], n[2]));
-      nFront = glm::dot(nFront, e) > 0.0 ? -nFront : nFront;
-      const dvec3 entry = dvec3(o[0], o[1], o[2]) + t * e;
-      double chord;
-      if (!scene.WorldTree->Intersect(&entry.x, &e.x, epsilon, 1.0e30, chord, n, f,
-            scene.Orientation) ||
-        CrossesAir(planes, entry, e, chord))
-      {
-        continue;
+        return Seen::Other;
       }
       // The path as the trace follows it: refracted in, then reflected at every hit.
-      dvec3 p = entry;
-      dvec3 d = ref::Refract(e, nFront, eta);
+      double n[3];
+      double f[3];
+      dvec3 p = eye.Entry;
+      dvec3 d = ref::Refract(eye.E, eye.Front, eta);
       bool secondCrosses = false;
       bool laterCrosses = false;
       bool totalAtFirst = false;
-      bool whole = true;
       for (int bounce = 1; bounce <= bounces; ++bounce)
       {
         double length;
-        if (!scene.WorldTree->Intersect(&p.x, &d.x, epsilon, 1.0e30, length, n, f,
-              scene.Orientation))
+        if (!scene.WorldTree->Intersect(
+              &p.x, &d.x, epsilon, 1.0e30, length, n, f, scene.Orientation))
         {
-          whole = false;
-          break;
+          return Seen::Other;
         }
         if (bounce > 1 && CrossesAir(planes, p, d, length))
         {
@@ -726,37 +753,12 @@ bool Air()
         p += length * d;
         d = ref::Reflect(d, normal);
       }
-      if (!whole)
-      {
-        continue;
-      }
-      double change = 0.0;
-      for (int i = 0; i < 3; ++i)
-      {
-        change = std::max(change, std::abs(image.At(x, y)[i] - std::min(255.0, reference[i])));
-      }
       if (secondCrosses && totalAtFirst)
       {
-        ++crossing;
-        differing += change > 16.0 ? 1 : 0;
+        return Seen::Crossing;
       }
-      else if (!secondCrosses && !laterCrosses)
-      {
-        clearErrors.push_back(change);
-      }
-    }
-  }
-  ok = IceTest::Expect(crossing > 300 && differing > crossing / 10,
-         "airy cube: " + std::to_string(differing) + " of the " + std::to_string(crossing) +
-           " pixels whose eye ray crosses no air plane and whose segment after a total "
-           "reflection does show their bubbles") &&
-    ok;
-  const IceTest::Stats clear = IceTest::Summarize(clearErrors);
-  return IceTest::Expect(clearErrors.size() > 300 && clear.Mean < 1.5,
-           "airy cube: the " + std::to_string(clearErrors.size()) +
-             " pixels whose path crosses no air plane agree with the air-free reference: mean " +
-             std::to_string(clear.Mean) + "/255") &&
-    ok;
+      return !secondCrosses && !laterCrosses ? Seen::Clear : Seen::Other;
+    });
 }
 
 bool AntiAliased()
