@@ -360,6 +360,9 @@ protected:
   // Whether the trace meets the cracks, and the bubbles, on its segments after a reflection
   // inside (the screen-space interior shows them along the first), and what it reads of them
   // (the crack table and grid, the bubbles' noise: `active`, three at most).
+  // Whether the trace carries the screen-space interior's look (cracks, bubbles, air) along its
+  // path: the look of the screen-space interior, not a debug view, not flat ice.
+  bool TracesInteriorLook() const;
   bool TracesCracks() const;
   bool TracesBubbles() const;
   bool TracesAir() const;

@@ -121,28 +121,30 @@ void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderPro
 }
 
 //------------------------------------------------------------------------------
+bool vtkIceMapper::TracesInteriorLook() const
+{
+  return this->TracesInterior() && this->InteriorMethod == InteriorScreenSpace &&
+    this->DebugView == DebugOff && !this->InputFlat;
+}
+
+//------------------------------------------------------------------------------
 bool vtkIceMapper::TracesCracks() const
 {
   vtkIceProperty* look = this->IceProperty.Get();
-  return this->TracesInterior() && this->InteriorMethod == InteriorScreenSpace &&
-    this->DebugView == DebugOff && !this->InputFlat && look->GetNumberOfCracks() > 0 &&
+  return this->TracesInteriorLook() && look->GetNumberOfCracks() > 0 &&
     look->GetCrackIntensity() * look->GetCrackReflection() > 0.0;
 }
 
 //------------------------------------------------------------------------------
 bool vtkIceMapper::TracesBubbles() const
 {
-  return this->TracesInterior() && this->InteriorMethod == InteriorScreenSpace &&
-    this->DebugView == DebugOff && !this->InputFlat &&
-    this->IceProperty->GetBubbleDensity() > 0.0;
+  return this->TracesInteriorLook() && this->IceProperty->GetBubbleDensity() > 0.0;
 }
 
 //------------------------------------------------------------------------------
 bool vtkIceMapper::TracesAir() const
 {
-  return this->TracesInterior() && this->InteriorMethod == InteriorScreenSpace &&
-    this->DebugView == DebugOff && !this->InputFlat &&
-    this->IceProperty->GetNumberOfAirPlanes() > 0;
+  return this->TracesInteriorLook() && this->IceProperty->GetNumberOfAirPlanes() > 0;
 }
 
 //------------------------------------------------------------------------------

@@ -666,15 +666,12 @@ bool Bubbles()
 }
 
 // Whether the segment p + s d, 0 < s < length, crosses one of the air planes (the squares
-// [-1, 1]^2 of their placements).
+// [-1, 1]^2 of their placements; `planes` holds the inverses, world to the square's frame).
 bool CrossesAir(const std::vector<vtkSmartPointer<vtkTransform>>& planes, const dvec3& p,
   const dvec3& d, double length)
 {
-  for (const auto& plane : planes)
+  for (const auto& local : planes)
   {
-    vtkNew<vtkTransform> local;
-    local->DeepCopy(plane);
-    local->Inverse();
     double a[3];
     double b[3];
     const dvec3 q = p + length * d;
@@ -713,6 +710,7 @@ bool Air()
   {
     planes.push_back(vtkSmartPointer<vtkTransform>::New());
     vtkIceAirGeometry::Placement(look->GetAirSeed(), i, bounds, planes.back());
+    planes.back()->Inverse();
   }
   const double eta = scene.Material.RefractionRatio;
   return TracedPart(scene, "airy cube", 10,

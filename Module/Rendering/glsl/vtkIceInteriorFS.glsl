@@ -170,7 +170,7 @@ vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
 // `viewDepth` in front of the camera) up to the nearest back face at view depth `backDepth`
 // (0: none), as vec4(add, keep) (iceInteriorOver).
-vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 normalWC, float viewDepth,
+vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float viewDepth,
   float backDepth, float cloudLength)
 {
   vec4 t = vec4(0.0, 0.0, 0.0, 1.0);
@@ -184,14 +184,12 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 normalWC, float vie
   // The ray in model coordinates: s runs over world units from the front to the back face.
   vec3 o = positionMC;
   vec3 d = mat3(iceWCMCMatrix) * e;
-  // The cloud and its bubbles are seen along the ray refracted at the front face (normalWC), up
+  // The cloud and its bubbles are seen along the ray refracted at the front face (refracted), up
   // to where it leaves (cloudLength, from the back faces; the eye ray's length where that is not
   // known): through a face seen at a slant they show where the light that reaches the eye
   // crossed the ice, not behind the face's outline, and not cut where the eye ray would leave
   // through a nearer side. The cracks and air planes keep the eye ray, as the paper's passes
   // draw them.
-  vec3 refracted = iceRefract(e, dot(normalWC, e) < 0.0 ? normalWC : -normalWC,
-    iceRefractionRatio);
   vec3 dCloud = mat3(iceWCMCMatrix) * refracted;
   float alongCloud = dot(refracted, iceViewDirectionWC);
   float sCloud = cloudLength > 0.0 ? cloudLength : sBack;

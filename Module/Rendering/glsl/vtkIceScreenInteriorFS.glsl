@@ -79,4 +79,4 @@ uniform sampler2D iceNearestFront;
   float cloudLength =
     backHere.a > 0.0 ? iceExitDistance(positionWC, refractedWC, backHere, exitTexel) : 0.0;
   gl_FragData[0] =
-    iceInteriorAlong(positionWC, positionMC, normalWC, front, backHere.a, cloudLength);
+    iceInteriorAlong(positionWC, positionMC, refractedWC, front, backHere.a, cloudLength);
