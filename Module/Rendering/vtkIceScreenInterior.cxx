@@ -36,12 +36,16 @@ vtkIceScreenInterior::~vtkIceScreenInterior() = default;
 namespace
 {
 // The quad's fragment shader for the renderer's lights (VTK's declarations and light loop, as
-// the surface's) and an environment sampled rough or sharp.
-std::string QuadShader(vtkOpenGLRenderer* renderer, bool rough)
+// the surface's), an environment sampled rough or sharp, and the milky core and bubbles only
+// where the look has them (llvmpipe would run their code anyway).
+std::string QuadShader(vtkOpenGLRenderer* renderer, vtkIceProperty* look)
 {
   using vtkIceShaderSections::Get;
   const int complexity = renderer->GetLightingCount() > 0 ? renderer->GetLightingComplexity() : 0;
-  std::string declarations = std::string(rough ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
+  const bool cloud = look->HasMilkyCore() || look->GetBubbleDensity() > 0.0;
+  std::string declarations =
+    std::string(look->GetRoughness() > 0.0 ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
+    (cloud ? "#define ICE_INTERIOR_CLOUD\n" : "") +
     renderer->GetLightingUniforms() + vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") +
     Get(vtkIceSurfaceFS, "Environment") + "uniform float iceRefractionRatio;\n" +
     Get(vtkIceDepthIntervalFS, "Normal") +
@@ -91,7 +95,7 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglDepthFunc(GL_GREATER);
 
-  const std::string source = QuadShader(renderer, mapper->GetIceProperty()->GetRoughness() > 0.0);
+  const std::string source = QuadShader(renderer, mapper->GetIceProperty());
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
   if (!quad)
   {

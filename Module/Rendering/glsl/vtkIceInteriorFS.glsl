@@ -169,7 +169,9 @@ vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
 
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
 // `viewDepth` in front of the camera) up to the nearest back face at view depth `backDepth`
-// (0: none), as vec4(add, keep) (iceInteriorOver).
+// (0: none), as vec4(add, keep) (iceInteriorOver). The milky core and the bubbles are compiled
+// in only where the look has them (ICE_INTERIOR_CLOUD): llvmpipe runs the code of a branch not
+// taken, at about a tenth of the teapot's full look.
 vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float viewDepth,
   float backDepth, float cloudLength)
 {
@@ -184,6 +186,7 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
   // The ray in model coordinates: s runs over world units from the front to the back face.
   vec3 o = positionMC;
   vec3 d = mat3(iceWCMCMatrix) * e;
+#ifdef ICE_INTERIOR_CLOUD
   // The cloud and its bubbles are seen along the ray refracted at the front face (refracted), up
   // to where it leaves (cloudLength, from the back faces; the eye ray's length where that is not
   // known): through a face seen at a slant they show where the light that reaches the eye
@@ -203,6 +206,7 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sCloud, iceCoreDensity);
     iceInteriorOver(t, ICE_CORE_COLOUR, iceMilkyCoreCover(depth));
   }
+#endif
   // The loop runs the same number of times for every fragment, and every step samples the atlas:
   // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform
   // control flow). A plane missed by this pixel's ray adds nothing (alpha 0). On llvmpipe, which
@@ -216,17 +220,21 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     bool hit = s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
     vec4 bubble = texture(iceAirAtlas, ray.shape.xy + 0.01 + 0.24 * (clamp(xy, -1.0, 1.0) + 1.0));
     vec4 layer = iceAirLayer(bubble, iceMilkiness, iceInteriorDebug == ICE_DEBUG_AIR);
+#ifdef ICE_INTERIOR_CLOUD
     if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
     {
       layer.a *= iceAirNearCore(coreOrigin + s * coreDirectionEye,
         iceCoreOpticalDepth(coreOrigin, coreDirectionEye, s, iceCoreDensity));
     }
+#endif
     iceInteriorOver(t, layer.rgb, hit ? layer.a : 0.0);
   }
 
+#ifdef ICE_INTERIOR_CLOUD
   // The bubbles in front of the core's cloud and the air planes they lie in.
   vec4 bubbles = iceBubbles(o, dCloud, sCloud, coreOrigin, coreDirection, viewDepth, alongCloud);
   t = vec4(bubbles.rgb + bubbles.a * t.rgb, bubbles.a * t.a);
+#endif
 
   // Cracks: only the nearest is shaded, once: its mirror hides what lies behind it where it
   // reflects totally, and seen square on a gap reflects a few percent, so the cracks behind it

@@ -60,6 +60,10 @@ uniform sampler2D iceNearestFront;
   float depthA = dot(a - iceCameraWC, iceViewDirectionWC);
   float depthB = dot(b - iceCameraWC, iceViewDirectionWC);
   vec3 positionWC = mix(a, b, (front - depthA) / (depthB - depthA));
+  vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
+  vec3 normalWC = iceDecodeNormal(frontTexel.ba);
+  vec4 backHere = texelFetch(iceBackNormals, texel, 0);
+#ifdef ICE_INTERIOR_CLOUD
   // The width of a pixel at depthA and depthB, from the next pixel's ray: linear in the depth.
   float nextX = ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x);
   vec4 nearNext = iceDCWCMatrix * vec4(nextX, ndc.y, -1.0, 1.0);
@@ -68,9 +72,6 @@ uniform sampler2D iceNearestFront;
   float widthB = length(farNext.xyz / farNext.w - b);
   float widthSlope = (widthB - widthA) / (depthB - depthA);
   icePixelFootprint = vec2(widthA - depthA * widthSlope, widthSlope);
-  vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
-  vec3 normalWC = iceDecodeNormal(frontTexel.ba);
-  vec4 backHere = texelFetch(iceBackNormals, texel, 0);
   // The refracted ray's own length in the ice, for the cloud and the bubbles along it.
   vec3 eyeWC = iceEyeVectorWC(positionWC);
   vec3 refractedWC = iceRefract(
@@ -78,5 +79,9 @@ uniform sampler2D iceNearestFront;
   vec4 exitTexel;
   float cloudLength =
     backHere.a > 0.0 ? iceExitDistance(positionWC, refractedWC, backHere, exitTexel) : 0.0;
+#else
+  vec3 refractedWC = vec3(0.0);
+  float cloudLength = 0.0;
+#endif
   gl_FragData[0] =
     iceInteriorAlong(positionWC, positionMC, refractedWC, front, backHere.a, cloudLength);
