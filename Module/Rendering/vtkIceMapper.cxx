@@ -57,7 +57,8 @@ enum ShaderParts
   TracePart = 128,
   TraceCracksPart = 256,
   TraceBubblesPart = 512,
-  TraceAirPart = 1024
+  TraceAirPart = 1024,
+  EncodedEnvironmentPart = 2048 // the environment shown gamma-corrected (ICE_ENVIRONMENT_SPACE)
 };
 
 }
@@ -255,6 +256,12 @@ int vtkIceMapper::ShaderVariant() const
   if (this->TracesAir())
   {
     variant |= TraceAirPart;
+  }
+  // Known from BindEnvironment, before VTK picks the shader.
+  if (this->ActiveEnvironmentObject &&
+    this->Environment->GetColorSpace() != vtkIceStaticEnvironment::AsSampled)
+  {
+    variant |= EncodedEnvironmentPart;
   }
   return variant;
 }
@@ -462,6 +469,8 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   {
     parts.FragmentDeclarations += "#define ICE_ROUGH_ENVIRONMENT\n";
   }
+  parts.FragmentDeclarations += std::string("#define ICE_ENVIRONMENT_SPACE ") +
+    (variant & EncodedEnvironmentPart ? "1\n" : "0\n");
   parts.FragmentDeclarations +=
     optics + Get(vtkIceSurfaceFS, "Environment") + Get(vtkIceSurfaceFS, "Dec");
   parts.FragmentImpl += Get(vtkIceSurfaceFS, "Impl");

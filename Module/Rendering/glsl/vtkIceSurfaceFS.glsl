@@ -6,13 +6,17 @@
 uniform samplerCube iceEnvironment;
 // World direction to the environment texture's lookup direction, and how to show its colours as
 // the skybox of the same texture shows them: 0 as sampled, 1 gamma-corrected
-// (vtkIceStaticEnvironment).
+// (vtkIceStaticEnvironment). The surface compiles the space in as ICE_ENVIRONMENT_SPACE (llvmpipe
+// would run the power for every lookup); elsewhere it is this uniform.
 uniform mat3 iceEnvironmentMatrix;
 uniform int iceEnvironmentColorSpace;
+#ifndef ICE_ENVIRONMENT_SPACE
+#define ICE_ENVIRONMENT_SPACE iceEnvironmentColorSpace
+#endif
 vec3 iceEnvironmentColor(vec3 directionWC)
 {
   vec3 color = texture(iceEnvironment, iceEnvironmentMatrix * directionWC).rgb;
-  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+  return ICE_ENVIRONMENT_SPACE == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
 }
 // The environment seen through the surface and mirrored by it: with Roughness, its prefiltered
 // copy (vtkIcePrefilteredEnvironment) at the level of the surface's roughness.
@@ -24,7 +28,7 @@ vec3 icePrefilteredEnvironmentColor(vec3 directionWC, float level)
 {
   vec3 color =
     textureLod(iceEnvironmentPrefiltered, iceEnvironmentMatrix * directionWC, level).rgb;
-  return iceEnvironmentColorSpace == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
+  return ICE_ENVIRONMENT_SPACE == 0 ? color : pow(max(color, vec3(0.0)), vec3(1.0 / 2.2));
 }
 vec3 iceSurfaceEnvironmentColor(vec3 directionWC)
 {
