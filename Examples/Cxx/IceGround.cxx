@@ -243,9 +243,10 @@ vtkSmartPointer<vtkActor> MakeGround(
       fy * ((1.0 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
   };
 
-  // Transparent ice lets most light through: its shadow darkens the ground by at most this much,
-  // and the light it gathers under itself brightens the ground by up to this much more.
-  const double strength = 0.7;
+  // Transparent ice lets most light through: its shadow darkens the ground by at most this much
+  // (Mitsuba's path-traced ground beside the foot is nearly as bright as far from it), and the
+  // light it gathers under itself brightens the ground by up to this much more.
+  const double strength = 0.25;
   const double caustic = 0.6;
   // The stone's brightness first, then blurred: its single grains a few pixels wide at the ice's
   // distance, softened to what a photograph resolves, and more with the distance from the ice, as
@@ -296,7 +297,7 @@ vtkSmartPointer<vtkActor> MakeGround(
       const double shadowed = shadowAt(i, j, 0);
       const double wet = shadowAt(i, j, 1);
       const double shade =
-        (1.0 - strength * shadowed) * (1.0 - 0.6 * wet) + caustic * shadowAt(i, j, 2);
+        (1.0 - strength * shadowed) * (1.0 - 0.3 * wet) + caustic * shadowAt(i, j, 2);
       const double mirrored = 0.12 * wet * (1.0 - shadowed);
       for (int c = 0; c < 3; ++c)
       {
