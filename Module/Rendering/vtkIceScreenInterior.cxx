@@ -35,17 +35,26 @@ vtkIceScreenInterior::~vtkIceScreenInterior() = default;
 
 namespace
 {
+// What of the interior the look has, as the quad's #defines: the milky core and bubbles, the air
+// planes, the cracks; only those are compiled in (llvmpipe would run the code of the others
+// anyway). Empty: the look has no interior, and the quad would add nothing.
+std::string InteriorParts(vtkIceProperty* look)
+{
+  return std::string(look->HasMilkyCore() || look->GetBubbleDensity() > 0.0
+                       ? "#define ICE_INTERIOR_CLOUD\n"
+                       : "") +
+    (look->GetNumberOfAirPlanes() > 0 ? "#define ICE_INTERIOR_AIR\n" : "") +
+    (look->GetNumberOfCracks() > 0 ? "#define ICE_INTERIOR_CRACKS\n" : "");
+}
+
 // The quad's fragment shader for the renderer's lights (VTK's declarations and light loop, as
-// the surface's), an environment sampled rough or sharp, and the milky core and bubbles only
-// where the look has them (llvmpipe would run their code anyway).
-std::string QuadShader(vtkOpenGLRenderer* renderer, vtkIceProperty* look)
+// the surface's), an environment sampled rough or sharp, and the interior's parts.
+std::string QuadShader(vtkOpenGLRenderer* renderer, vtkIceProperty* look, const std::string& parts)
 {
   using vtkIceShaderSections::Get;
   const int complexity = renderer->GetLightingCount() > 0 ? renderer->GetLightingComplexity() : 0;
-  const bool cloud = look->HasMilkyCore() || look->GetBubbleDensity() > 0.0;
   std::string declarations =
-    std::string(look->GetRoughness() > 0.0 ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
-    (cloud ? "#define ICE_INTERIOR_CLOUD\n" : "") +
+    std::string(look->GetRoughness() > 0.0 ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") + parts +
     renderer->GetLightingUniforms() + vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") +
     Get(vtkIceSurfaceFS, "Environment") + "uniform float iceRefractionRatio;\n" +
     Get(vtkIceDepthIntervalFS, "Normal") +
@@ -95,7 +104,12 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglDepthFunc(GL_GREATER);
 
-  const std::string source = QuadShader(renderer, mapper->GetIceProperty());
+  const std::string parts = InteriorParts(mapper->GetIceProperty());
+  if (parts.empty())
+  {
+    return; // cleared: nothing added, all of the ice colour kept
+  }
+  const std::string source = QuadShader(renderer, mapper->GetIceProperty(), parts);
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
   if (!quad)
   {

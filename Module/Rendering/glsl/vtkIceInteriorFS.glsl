@@ -169,9 +169,10 @@ vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
 
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
 // `viewDepth` in front of the camera) up to the nearest back face at view depth `backDepth`
-// (0: none), as vec4(add, keep) (iceInteriorOver). The milky core and the bubbles are compiled
-// in only where the look has them (ICE_INTERIOR_CLOUD): llvmpipe runs the code of a branch not
-// taken, at about a tenth of the teapot's full look.
+// (0: none), as vec4(add, keep) (iceInteriorOver). The milky core and the bubbles
+// (ICE_INTERIOR_CLOUD), the air planes (ICE_INTERIOR_AIR) and the cracks (ICE_INTERIOR_CRACKS)
+// are compiled in only where the look has them: llvmpipe runs the code of a branch not taken
+// (the cloud's alone took about a tenth of the teapot's full look).
 vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float viewDepth,
   float backDepth, float cloudLength)
 {
@@ -211,6 +212,7 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
   // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform
   // control flow). A plane missed by this pixel's ray adds nothing (alpha 0). On llvmpipe, which
   // executes both sides of a branch, this is also the cheapest form.
+#ifdef ICE_INTERIOR_AIR
   int airHere = iceAirHere();
   for (int k = 0; k < airHere; ++k)
   {
@@ -229,6 +231,7 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
 #endif
     iceInteriorOver(t, layer.rgb, hit ? layer.a : 0.0);
   }
+#endif
 
 #ifdef ICE_INTERIOR_CLOUD
   // The bubbles in front of the core's cloud and the air planes they lie in.
@@ -240,11 +243,13 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
   // reflects totally, and seen square on a gap reflects a few percent, so the cracks behind it
   // would add little.
   vec3 highlights = vec3(0.0);
+  bool crackSeen = false;
+#ifdef ICE_INTERIOR_CRACKS
   float nearest;
   int nearestRecord;
   float nearestEdge;
   iceNearestCrack(o, d, sBack, nearest, nearestRecord, nearestEdge);
-  bool crackSeen = nearestRecord >= 0;
+  crackSeen = nearestRecord >= 0;
   vec3 nearestNormal = vec3(0.0);
   if (crackSeen)
   {
@@ -268,6 +273,7 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     iceCrackSheet(t, e, nearestNormal, nearestEdge, 1.0 / iceRefractionRatio,
       iceCrackIntensity * iceCrackReflection, iceSurfaceEnvironmentColor(reflect(e, nearestNormal)));
   }
+#endif
   return iceInteriorDebug == ICE_DEBUG_CRACKS && crackSeen
     ? vec4(1.0, 0.0, 0.0, 0.0)
     : vec4(t.rgb + iceCrackIntensity * highlights, t.a);
