@@ -97,39 +97,47 @@ float iceGridStep(inout IceGridWalk walk)
 }
 
 // The nearest crack the ray o + s d (model coordinates) crosses inside its outline with
-// 0 < s < sEnd: true with s, its record and where on it (`edge`: the distance from its centre over
-// the outline's, 1 at the outline). The grid's cells are walked until a crack nearer than a
-// cell's far side is found (any nearer one crosses a cell visited already, which lists it). A
-// crack missed (no crossing in range, or outside its outline) or met behind the nearest so far is
-// skipped before its outline is read.
-bool iceNearestCrack(vec3 o, vec3 d, float sEnd, out float nearest, out int record, out float edge)
+// 0 < s < sEnd: true with s, its record, the ray in its frame (`nearestRay`, for iceCrackNormal) and
+// where on it (`edge`: the distance from its centre over the outline's, 1 at the outline). The
+// grid's cells are walked until a crack nearer than a cell's far side is found (any nearer one
+// crosses a cell visited already, which lists it). A crack missed (no crossing in range, or
+// outside its outline) or met behind the nearest so far is skipped before its outline is read.
+// Both loops test at their end: llvmpipe runs the body of a loop that tests first once more, with
+// every lane masked off, before it leaves.
+bool iceNearestCrack(vec3 o, vec3 d, float sEnd, out float nearest, out int record,
+  out float edge, out IceLocalRay nearestRay)
 {
   nearest = sEnd;
   record = -1;
   edge = 0.0;
+  nearestRay = IceLocalRay(vec3(0.0), vec3(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+  if (iceCrackCount <= 0)
+  {
+    return false;
+  }
   vec3 gridP = (o - iceCrackGridOrigin) / iceCrackGridCell;
   ivec3 gridSize = ivec3(iceCrackGridSize + 0.5);
   IceGridWalk walk = iceGridWalk(gridP, d / iceCrackGridCell,
     clamp(floor(gridP), vec3(0.0), vec3(gridSize - 1)));
+  int cells = gridSize.x + gridSize.y + gridSize.z;
+  int i = 0;
+  bool inGrid = true;
   float sCell = 0.0;
-  int cells = iceCrackCount > 0 ? gridSize.x + gridSize.y + gridSize.z : 0;
-  for (int i = 0; i < cells && sCell < nearest; ++i)
+  do
   {
     ivec3 c = ivec3(walk.cell);
-    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, gridSize)))
-    {
-      break;
-    }
     int cell = (c.z * gridSize.y + c.y) * gridSize.x + c.x;
+    int k = iceCrackGridEntry(cell);
     int last = iceCrackGridEntry(cell + 1);
-    for (int k = iceCrackGridEntry(cell); k < last; ++k)
+    do
     {
+      int entry = k++;
       // The sheet z = a x^2 + b y^2 in the crack's frame: a quadratic in s. A ray crosses such a
       // shallow sheet at most once inside the outline in practice: the nearer root in range.
-      int candidate = iceCrackGridEntry(k);
-      if (candidate == record)
+      int candidate = iceCrackGridEntry(min(entry, last - 1));
+      if (entry >= last || candidate == record)
       {
-        continue; // met in an earlier cell
+        continue; // an empty cell, or met in an earlier cell
       }
       IceLocalRay ray = iceLocalRay(candidate, o, d);
       float a = ray.shape.x;
@@ -160,18 +168,21 @@ bool iceNearestCrack(vec3 o, vec3 d, float sEnd, out float nearest, out int reco
       nearest = s;
       record = candidate;
       edge = length(hit.xy) / max(outline, 1.0e-6);
-    }
+      nearestRay = ray;
+    } while (k < last);
     sCell = iceGridStep(walk);
-  }
+    ivec3 next = ivec3(walk.cell);
+    inGrid = all(greaterThanEqual(next, ivec3(0))) && all(lessThan(next, gridSize));
+    ++i;
+  } while (inGrid && i < cells && sCell < nearest);
   return record >= 0;
 }
 
-// The normal of crack `record` where the ray o + s d meets it, in model coordinates as a normal
-// (to the world by the normal matrix), unnormalised: the gradient of z - a x^2 - b y^2 in the
-// crack's frame taken back.
-vec3 iceCrackNormal(int record, vec3 o, vec3 d, float s)
+// The normal of the crack whose frame holds `ray` (iceNearestCrack's) where the ray meets it at
+// s, in model coordinates as a normal (to the world by the normal matrix), unnormalised: the
+// gradient of z - a x^2 - b y^2 in the crack's frame taken back.
+vec3 iceCrackNormal(IceLocalRay ray, float s)
 {
-  IceLocalRay ray = iceLocalRay(record, o, d);
   vec3 hit = ray.origin + s * ray.direction;
   vec3 g = vec3(-2.0 * ray.shape.x * hit.x, -2.0 * ray.shape.y * hit.y, 1.0);
   return g.x * ray.row0.xyz + g.y * ray.row1.xyz + g.z * ray.row2.xyz;

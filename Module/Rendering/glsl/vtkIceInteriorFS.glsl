@@ -85,7 +85,9 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
   vec3 v = d / iceBubbleCell;
   IceGridWalk walk = iceGridWalk(p, v, floor(p));
   float sCell = 0.0;
-  for (int i = 0; i < 160 && sCell < sBack && layer.a > 0.02; ++i)
+  int i = 0;
+  // Tested at the end, as iceNearestCrack's loops: with sBack <= 0 the one step adds nothing.
+  do
   {
     ivec3 c = ivec3(walk.cell);
     vec3 column = iceCellRandom(ivec3(c.x, -7919, c.z));
@@ -133,7 +135,7 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
       layer.a *= 1.0 - a;
     }
     sCell = iceGridStep(walk);
-  }
+  } while (++i < 160 && sCell < sBack && layer.a > 0.02);
   return layer;
 }
 
@@ -208,18 +210,21 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     iceInteriorOver(t, ICE_CORE_COLOUR, iceMilkyCoreCover(depth));
   }
 #endif
-  // The loop runs the same number of times for every fragment, and every step samples the atlas:
-  // texture() then takes its level from the pixel's footprint (implicit derivatives need uniform
-  // control flow). A plane missed by this pixel's ray adds nothing (alpha 0). On llvmpipe, which
-  // executes both sides of a branch, this is also the cheapest form.
+  // Every step samples the atlas: texture() then takes its level from the pixel's footprint
+  // (implicit derivatives need uniform control flow). A plane missed by this pixel's ray adds
+  // nothing (alpha 0). On llvmpipe, which executes both sides of a branch, this is also the
+  // cheapest form. Tested at the end, as iceNearestCrack's loops: where the tile has no plane,
+  // the one step adds nothing.
 #ifdef ICE_INTERIOR_AIR
   int airHere = iceAirHere();
-  for (int k = 0; k < airHere; ++k)
+  int k = 0;
+  do
   {
-    IceLocalRay ray = iceLocalRay(iceAirRecord(k), o, d);
+    // With no plane, min() reads the list's count (0): a record that exists.
+    IceLocalRay ray = iceLocalRay(iceAirRecord(min(k, airHere - 1)), o, d);
     float s = -ray.origin.z / ray.direction.z;
     vec2 xy = ray.origin.xy + s * ray.direction.xy;
-    bool hit = s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
+    bool hit = k < airHere && s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
     vec4 bubble = texture(iceAirAtlas, ray.shape.xy + 0.01 + 0.24 * (clamp(xy, -1.0, 1.0) + 1.0));
     vec4 layer = iceAirLayer(bubble, iceMilkiness, iceInteriorDebug == ICE_DEBUG_AIR);
 #ifdef ICE_INTERIOR_CLOUD
@@ -230,7 +235,7 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     }
 #endif
     iceInteriorOver(t, layer.rgb, hit ? layer.a : 0.0);
-  }
+  } while (++k < airHere);
 #endif
 
 #ifdef ICE_INTERIOR_CLOUD
@@ -248,7 +253,8 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
   float nearest;
   int nearestRecord;
   float nearestEdge;
-  iceNearestCrack(o, d, sBack, nearest, nearestRecord, nearestEdge);
+  IceLocalRay nearestRay;
+  iceNearestCrack(o, d, sBack, nearest, nearestRecord, nearestEdge, nearestRay);
   crackSeen = nearestRecord >= 0;
   vec3 nearestNormal = vec3(0.0);
   if (crackSeen)
@@ -256,7 +262,7 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     // The sheet's normal (gradient of z - a x^2 - b y^2) back in model, then world space,
     // tilted by the noise fixed to the model (as the paper passes' crack shader, precomputed),
     // facing the viewer.
-    vec3 n = normalize(iceNormalMCWCMatrix * iceCrackNormal(nearestRecord, o, d, nearest));
+    vec3 n = normalize(iceNormalMCWCMatrix * iceCrackNormal(nearestRay, nearest));
     vec3 sheetNormal = dot(n, e) > 0.0 ? -n : n;
     vec3 gradient = iceNormalMCWCMatrix *
       textureLod(iceInteriorBump, (o + nearest * d) * iceCrackBumpFrequency / 8.0, 0.0).xyz;

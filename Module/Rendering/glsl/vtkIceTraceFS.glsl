@@ -326,9 +326,10 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool w
       float sCrack;
       int crack;
       float edge;
-      if (iceNearestCrack(pModel, dModel, t, sCrack, crack, edge))
+      IceLocalRay crackRay;
+      if (iceNearestCrack(pModel, dModel, t, sCrack, crack, edge, crackRay))
       {
-        vec3 nCrack = normalize(iceCrackNormal(crack, pModel, dModel, sCrack) * linear);
+        vec3 nCrack = normalize(iceCrackNormal(crackRay, sCrack) * linear);
         nCrack = dot(nCrack, d) > 0.0 ? -nCrack : nCrack;
         float mirror =
           clamp(iceTraceCrackShare * iceCrackReflectance(dot(d, nCrack), 1.0 / eta), 0.0, 1.0);
