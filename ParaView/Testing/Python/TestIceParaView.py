@@ -168,8 +168,7 @@ for name, make_texture in (("png", h.write_environment), ("hdr", h.write_hdr_env
     display.Representation = "Ice"
     h.clean_ice(display)
     visible = h.capture(view, os.path.join(out, "skybox-%s-ice.png" % name))
-    display.IndexOfRefraction = 1.0
-    display.FresnelPower = 1.0e6
+    h.invisible_ice(display)
     invisible = h.capture(view, os.path.join(out, "skybox-%s-invisible.png" % name))
     Hide(sphere, view)
     sky = h.capture(view, os.path.join(out, "skybox-%s-alone.png" % name))

@@ -21,9 +21,7 @@ view.Background = [0.8, 0.8, 0.8]
 display = Show(sphere, view)
 h.look_at(view, (0.0, 0.0, 5.0))
 display.Representation = "Ice"
-h.clean_ice(display)
-display.IndexOfRefraction = 1.0
-display.FresnelPower = 1.0e6
+h.invisible_ice(display)
 invisible = h.capture(view, os.path.join(out, "absorption-off.png"))
 
 color = numpy.array([0.3, 0.6, 0.9])

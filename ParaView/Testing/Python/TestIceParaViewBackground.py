@@ -28,9 +28,7 @@ for kind in ("RenderView", "IceView"):
         h.look_at(view, (0.3, 0.5, 5.0))
         surface = h.capture(view, os.path.join(out, name + "-surface.png"))
         display.Representation = "Ice"
-        h.clean_ice(display)
-        display.IndexOfRefraction = 1.0
-        display.FresnelPower = 1.0e6
+        h.invisible_ice(display)
         invisible = h.capture(view, os.path.join(out, name + "-invisible.png"))
         # The ice is drawn: tinted, it shows.
         display.IceColor = [1.0, 0.5, 0.5]

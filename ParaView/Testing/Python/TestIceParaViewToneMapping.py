@@ -29,9 +29,7 @@ display = Show(sphere, view)
 h.look_at(view, (0.3, 0.5, 5.0))
 surface = h.capture(view, os.path.join(out, "tone-mapping-surface.png"))
 display.Representation = "Ice"
-h.clean_ice(display)
-display.IndexOfRefraction = 1.0
-display.FresnelPower = 1.0e6
+h.invisible_ice(display)
 plain = h.capture(view, os.path.join(out, "tone-mapping-off.png"))
 tone_mapped(view)
 mapped = h.capture(view, os.path.join(out, "tone-mapping-on.png"))

@@ -71,6 +71,14 @@ def clean_ice(display):
     display.BumpStrength = 0
 
 
+def invisible_ice(display):
+    """Clean ice with eta=1 (refraction ratio 1) and no reflection: it shows what lies behind it
+    as the view draws it."""
+    clean_ice(display)
+    display.IndexOfRefraction = 1.0
+    display.FresnelPower = 1.0e6
+
+
 def capture(view, path):
     """Renders `view`, saves it to `path` and returns the image as an (h, w, 3) int array."""
     Render(view)
