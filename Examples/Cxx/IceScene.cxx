@@ -248,12 +248,12 @@ vtkSmartPointer<vtkPolyData> LoadModel(
   }
   else if (model == "cube")
   {
-    // An ice cube: flat faces, slightly melted round edges, faint unevenness (the block source's
-    // displacement noise at an eighth of its default), fine enough for the rounding.
+    // An ice cube: flat faces, slightly melted round edges, a gentle unevenness (the block
+    // source's displacement noise at three eighths of its default), fine enough for the rounding.
     auto cube = vtkSmartPointer<vtkIceBlockSource>::New();
     cube->SetResolution(48);
     cube->SetRoundness(0.22);
-    cube->SetDisplacement(0.01);
+    cube->SetDisplacement(0.03);
     cube->SetSeed(3);
     source = cube;
   }
@@ -428,6 +428,8 @@ vtkActor* Populate(
 
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputData(model);
+  // Standing on the ground, the ice stands in its melt water: its base shows the ground.
+  mapper->SetWetBase(options.Ground);
   vtkNew<vtkActor> ice;
   ice->SetMapper(mapper);
   renderer->AddActor(ice);

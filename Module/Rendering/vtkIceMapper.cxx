@@ -58,7 +58,8 @@ enum ShaderParts
   TraceCracksPart = 256,
   TraceBubblesPart = 512,
   TraceAirPart = 1024,
-  EncodedEnvironmentPart = 2048 // the environment shown gamma-corrected (ICE_ENVIRONMENT_SPACE)
+  EncodedEnvironmentPart = 2048, // the environment shown gamma-corrected (ICE_ENVIRONMENT_SPACE)
+  TraceWetBasePart = 4096
 };
 
 }
@@ -256,6 +257,10 @@ int vtkIceMapper::ShaderVariant() const
   if (this->TracesAir())
   {
     variant |= TraceAirPart;
+  }
+  if (this->WetBase && (variant & TracePart))
+  {
+    variant |= TraceWetBasePart;
   }
   // Known from BindEnvironment, before VTK picks the shader.
   if (this->ActiveEnvironmentObject &&
@@ -507,7 +512,8 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
     // The cracks on the segments after a reflection inside: their search before the trace.
     // The bubbles and the air planes need the interior's declarations whole (its uniforms,
     // noise, grid walk, air atlas).
-    std::string cracks = (variant & TraceCracksPart) ? "#define ICE_TRACE_CRACKS\n" : "";
+    std::string cracks = std::string(variant & TraceWetBasePart ? "#define ICE_TRACE_WET_BASE\n" : "") +
+      (variant & TraceCracksPart ? "#define ICE_TRACE_CRACKS\n" : "");
     if (variant & (TraceBubblesPart | TraceAirPart))
     {
       cracks += std::string(variant & TraceBubblesPart ? "#define ICE_TRACE_BUBBLES\n" : "") +
@@ -656,6 +662,14 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   this->CheckInputClosure();
   program->SetUniformf("iceTraceOrientation", static_cast<float>(this->InputOrientation));
   program->SetUniformi("iceTraceAntiAliasing", this->TraceAntiAliasing ? 1 : 0);
+  if (program->IsUniformUsed("iceTraceWetBase"))
+  {
+    // The lowest 4 % of the height: wet in its lower half, drying over its upper half.
+    const double band = 0.04 * (bounds[3] - bounds[2]);
+    const float wetBase[2] = { static_cast<float>(bounds[2] + 0.5 * band),
+      static_cast<float>(bounds[2] + band) };
+    program->SetUniform2f("iceTraceWetBase", wetBase);
+  }
 
   vtkTextureObject* active[6] = { nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
   this->Trace->Activate(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), program, act,
@@ -805,6 +819,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->TwoSidedMethod == TwoSidedExitPoint ? "ExitPoint" : "BlendedNormals") << "\n";
   os << indent << "MaxBounces: " << this->MaxBounces << "\n";
   os << indent << "TraceAntiAliasing: " << (this->TraceAntiAliasing ? "On" : "Off") << "\n";
+  os << indent << "WetBase: " << (this->WetBase ? "On" : "Off") << "\n";
   os << indent << "CullHiddenBackfaces: " << (this->CullHiddenBackfaces ? "On" : "Off") << "\n";
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
   static const char* const interiorMethods[] = { "PaperPasses", "ScreenSpace" };

@@ -150,6 +150,21 @@ public:
 
   ///@{
   /**
+   * Whether the ice stands in its melt water, on a surface below it along the model's y axis (the
+   * trace only: MaxBounces above 1). Light inside that meets the ice's base, its faces in the
+   * lowest 4 % of its height (fading to dry over the upper half of that band), leaves into water
+   * instead of air: ice and water refract nearly alike (1.31 and 1.33), so nothing reflects totally
+   * there and the base shows what lies under the ice (the environment below it, the ground of a
+   * dynamic cube map) instead of mirroring the ice's inside, as ice on a wet surface does. Default
+   * off; ice-render turns it on where it stands the ice on the ground.
+   */
+  vtkSetMacro(WetBase, bool);
+  vtkGetMacro(WetBase, bool);
+  vtkBooleanMacro(WetBase, bool);
+  ///@}
+
+  ///@{
+  /**
    * Whether the mapper warns (once) when the renderer has no usable environment texture and the
    * ice reflects the built-in sky. Default on. ParaView's Ice representation turns it off: its
    * views have no environment unless the background is a skybox, and the sky is the default there.
@@ -352,6 +367,7 @@ protected:
   int TwoSidedMethod = TwoSidedBlendedNormals;
   int MaxBounces = 1;
   bool TraceAntiAliasing = true;
+  bool WetBase = false;
   // The triangle tree MaxBounces traces (made on first use), and whether a failed build was said.
   std::unique_ptr<vtkIceTraceTextures> Trace;
   bool WarnedTraceUnusable = false;

@@ -4,7 +4,7 @@
 // IndexOfRefraction 1, no reflection and no absorption passes every view ray straight through,
 // so each interior pixel must be the skybox behind it seen through the core: mixed towards the
 // core's colour by 1 - exp(-depth), depth = vtkIceOpticsReference::CoreOpticalDepth of the ray's
-// chord in the core's frame (the sphere's bounds, scaled by the radius). The centre is whiter
+// chord in the core's frame (the sphere's bounds, scaled by the radius) times its CoreStreaks. The centre is whiter
 // than the rim; a core of radius 0 changes no pixel; the paper passes draw none and say so.
 #include "IceTestUtilities.h"
 #include "vtkIceInteriorLook.h"
@@ -42,9 +42,10 @@ Comparison CompareWithReference(IceTest::ClearSphereScene& scene, const IceTest:
   Comparison comparison;
   comparison.Stats = scene.CompareAlongChords(
     image, [&](int x, int y, const glm::dvec3& entry, const glm::dvec3& e, double chord) {
+      const glm::dvec3 origin = (entry - centre) * scale;
       const double covered = 1.0 -
-        std::exp(-vtkIceOpticsReference::CoreOpticalDepth(
-          (entry - centre) * scale, e * scale, chord, density));
+        std::exp(-vtkIceOpticsReference::CoreOpticalDepth(origin, e * scale, chord, density) *
+          vtkIceOpticsReference::CoreStreaks(origin, e * scale));
       // The ray's closest approach to the centre: the inner or the outer third of the disk.
       const double miss = glm::length(glm::cross(entry, e));
       if (miss < 1.0 / 3.0 || miss > 2.0 / 3.0)

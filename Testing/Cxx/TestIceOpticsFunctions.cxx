@@ -3,7 +3,8 @@
 // The optics' GLSL functions run on the GPU against their CPU mirrors (vtkIceOpticsReference.h)
 // over a sweep of their arguments, each written by a full-screen quad into a float texture and read
 // back: iceCrackReflectance (two indices, both signs of the cosine), iceFresnel, iceTransmittance,
-// iceRefractionSpread, iceMasking, iceRoughInterface (vtkIceOptics.glsl), iceGgxDistribution
+// iceRefractionSpread, iceMasking, iceRoughInterface, iceCoreStreaks and its iceLatticeNoise
+// (vtkIceOptics.glsl), iceGgxDistribution
 // (vtkIcePrefilterFS.glsl). Agreement within float rounding: relative 1e-4 (absolute 1e-6 near 0;
 // iceRoughInterface from inside 1e-3, see there).
 #include "IceTestUtilities.h"
@@ -138,6 +139,18 @@ int TestIceOpticsFunctions(int, char*[])
       // near 0 and its masking is linear in it: float's rounding of the facet's cosine (1e-7)
       // grows there to about 2e-4 of the share.
       1.0e-3 },
+    { "iceCoreStreaks",
+      "vec4(iceCoreStreaks(vec3(2.0 * x - 1.0, 0.3, -1.0), vec3(0.1, 0.2, 1.0)), "
+      "iceCoreStreaks(vec3(0.5, 1.6 * x - 0.8, 0.7 * x), vec3(-0.6, 0.0, 0.8)), "
+      "iceLatticeNoise(vec3(9.0 * x - 3.0, 2.5, -1.25)), "
+      "iceLatticeNoise(vec3(0.75, 13.0 * x - 6.5, 4.0 * x)))",
+      [](double x) {
+        return std::array<double, 4>{
+          ref::CoreStreaks(ref::Vec3(2.0 * x - 1.0, 0.3, -1.0), ref::Vec3(0.1, 0.2, 1.0)),
+          ref::CoreStreaks(ref::Vec3(0.5, 1.6 * x - 0.8, 0.7 * x), ref::Vec3(-0.6, 0.0, 0.8)),
+          ref::LatticeNoise(ref::Vec3(9.0 * x - 3.0, 2.5, -1.25)),
+          ref::LatticeNoise(ref::Vec3(0.75, 13.0 * x - 6.5, 4.0 * x)) };
+      } },
     { "iceGgxDistribution",
       "vec4(iceGgxDistribution(x, pow(0.25, 4.0)), iceGgxDistribution(x, pow(0.5, 4.0)), "
       "iceGgxDistribution(x, 1.0), 0.0)",

@@ -27,6 +27,9 @@
 //              of the bubbles while the second, after a total reflection, crosses their middle
 //              differ from the bubble-free reference; those whose two segments both stay clear
 //              agree with it
+//   wet-base   the cube standing in water (WetBase), 6 bounces, seen from above: its bottom shows
+//              what lies below instead of mirroring the inside (the water changes a tenth of the
+//              references or more)
 //   antialiased  ice-render's cube (rounded edges), 6 bounces, TraceAntiAliasing on (the other
 //              cases turn it off: the CPU traces one path a pixel): where the extra paths change
 //              the picture, it is nearer the CPU's mean of 16 paths across each pixel than one
@@ -141,7 +144,7 @@ vtkSmartPointer<vtkPolyData> RoundedCube()
   vtkNew<vtkIceBlockSource> block;
   block->SetResolution(48);
   block->SetRoundness(0.22);
-  block->SetDisplacement(0.01);
+  block->SetDisplacement(0.03);
   block->SetSeed(3);
   block->Update();
   double bounds[6];
@@ -197,6 +200,7 @@ struct Scene
   ref::Material Material;
   ref::TracedCore Core; // density 0: none
   ref::TracedCracks Cracks; // share 0: none
+  ref::TracedWetBase WetBase; // Wet == Dry: none
   // With cracks: the cracks in world coordinates (no actor transform), to leave out the pixels
   // whose eye ray meets one.
   vtkIceCrackTable* EyeCracks = nullptr;
@@ -284,7 +288,7 @@ struct Scene
     };
     const dvec3 refracted = ref::TracedRefraction(e, position, nFront,
       this->Mapper->GetMaxBounces(), epsilon, this->Material, hit, environment, this->Core,
-      this->Cracks);
+      this->Cracks, this->WetBase);
     const dvec3 reflected = environment(ref::Reflect(e, nFront));
     const double f = ref::DielectricReflectance(glm::dot(e, nFront), this->Material.RefractionRatio);
     colour = refracted + (reflected - refracted) * f;
@@ -306,9 +310,11 @@ struct Scene
       const dvec3 inside = ref::Refract(e, nFront, this->Material.RefractionRatio);
       double length;
       const bool leaves = hit(position, inside, epsilon, length, unused, unusedFace);
+      const dvec3 origin = (position - this->Core.Center) * this->Core.Scale;
       const double cover = 1.0 -
-        std::exp(-ref::CoreOpticalDepth((position - this->Core.Center) * this->Core.Scale,
-          inside * this->Core.Scale, leaves ? length : chord, this->Core.Density));
+        std::exp(-ref::CoreOpticalDepth(origin, inside * this->Core.Scale,
+                   leaves ? length : chord, this->Core.Density) *
+          ref::CoreStreaks(origin, inside * this->Core.Scale));
       colour = colour * (1.0 - cover) + this->Core.Colour * cover;
     }
     colour *= 255.0;
@@ -821,6 +827,52 @@ bool AntiAliased()
     ok;
 }
 
+// The cube standing in water (WetBase): its lowest 4 % of height, wet in the lower half, the
+// cube's bottom face among it. Seen from above, the light inside meets the bottom at glancing
+// angles: dry, it reflects totally; wet, most of it leaves into the water.
+bool WetBase()
+{
+  const double camera[3] = { 2.2, 2.8, 3.0 };
+  Scene scene(Cube(), camera);
+  scene.Mapper->SetMaxBounces(6);
+  scene.Mapper->WetBaseOn();
+  const double band = 0.04 * 1.6;
+  scene.WetBase.Wet = -0.8 + 0.5 * band;
+  scene.WetBase.Dry = -0.8 + band;
+  const IceTest::Image image = scene.Render();
+  bool ok =
+    IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "wet cube: no OpenGL error");
+  // The case means something only where the water changes the reference.
+  int changed = 0;
+  int compared = 0;
+  for (int y = 0; y < image.Height; y += 4)
+  {
+    for (int x = 0; x < image.Width; x += 4)
+    {
+      dvec3 wet;
+      if (!scene.Reference(x, y, wet))
+      {
+        continue;
+      }
+      ++compared;
+      const ref::TracedWetBase base = scene.WetBase;
+      scene.WetBase = ref::TracedWetBase();
+      dvec3 dry;
+      scene.Reference(x, y, dry);
+      scene.WetBase = base;
+      const dvec3 difference = glm::abs(wet - dry);
+      changed += std::max({ difference.x, difference.y, difference.z }) > 10.0 ? 1 : 0;
+    }
+  }
+  ok = IceTest::Expect(changed > compared / 10,
+         "wet cube: the water under the base changes " + std::to_string(changed) + " of " +
+           std::to_string(compared) + " sampled references by more than 10/255") &&
+    ok;
+  return IceTest::ReportReference(
+           "wet cube, 6 bounces, against its CPU reference", scene.Compare(image), 10000) &&
+    ok;
+}
+
 bool Bounces()
 {
   const double camera[3] = { 2.6, 2.2, 2.9 };
@@ -866,6 +918,6 @@ int TestIceTrace(int argc, char* argv[])
           return AgainstReference("cube with a milky core", Cube(), corner, 6, false, false, true);
         } },
       { "multisampled", Multisampled }, { "cracks", Cracks }, { "bubbles", Bubbles },
-      { "air", Air },
+      { "air", Air }, { "wet-base", WetBase },
       { "antialiased", AntiAliased } });
 }

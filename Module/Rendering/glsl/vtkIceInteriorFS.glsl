@@ -36,17 +36,6 @@ int iceAirHere() { return iceAirCount; }
 int iceAirRecord(int j) { return iceCrackCount + j; }
 #endif
 
-// One well-mixed 32-bit integer of another (Chris Wellons' lowbias32 constants).
-uint iceMix(uint x)
-{
-  x ^= x >> 16u;
-  x *= 0x7feb352du;
-  x ^= x >> 15u;
-  x *= 0x846ca68bu;
-  x ^= x >> 16u;
-  return x;
-}
-
 // Three independent numbers in [0, 1) for a grid cell, the same on every GPU.
 vec3 iceCellRandom(ivec3 c)
 {
@@ -206,7 +195,8 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
   vec3 coreDirectionEye = d * iceCoreScale;
   if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
   {
-    float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sCloud, iceCoreDensity);
+    float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sCloud, iceCoreDensity) *
+      iceCoreStreaks(coreOrigin, coreDirection);
     iceInteriorOver(t, ICE_CORE_COLOUR, iceMilkyCoreCover(depth));
   }
 #endif

@@ -163,6 +163,56 @@ float iceCoreOpticalDepth(vec3 p, vec3 q, float sEnd, float density)
   return density * 0.886226925 * exp(-miss2) * (iceErf(speed * sEnd + along) - iceErf(along));
 }
 
+// One well-mixed 32-bit integer of another (Chris Wellons' lowbias32 constants): the same on every
+// GPU and on the CPU.
+uint iceMix(uint x)
+{
+  x ^= x >> 16u;
+  x *= 0x7feb352du;
+  x ^= x >> 15u;
+  x *= 0x846ca68bu;
+  x ^= x >> 16u;
+  return x;
+}
+
+// Value noise in [0, 1) on the integer lattice: hashed corners (integers, as the CPU hashes them),
+// trilinear between them, eased by 3f^2 - 2f^3.
+float iceLatticeNoise(vec3 x)
+{
+  vec3 i = floor(x);
+  vec3 f = x - i;
+  vec3 u = f * f * (3.0 - 2.0 * f);
+  ivec3 c = ivec3(i);
+  float corner[8];
+  for (int k = 0; k < 8; ++k)
+  {
+    ivec3 at = c + ivec3(k & 1, (k >> 1) & 1, k >> 2);
+    corner[k] = float(iceMix(uint(at.x) + iceMix(uint(at.y) + iceMix(uint(at.z)))) >> 8u) *
+      (1.0 / 16777216.0);
+  }
+  vec4 y0 = mix(vec4(corner[0], corner[2], corner[4], corner[6]),
+    vec4(corner[1], corner[3], corner[5], corner[7]), u.x);
+  vec2 z0 = mix(y0.xz, y0.yw, u.y);
+  return mix(z0.x, z0.y, u.z);
+}
+
+// How the milky core's air varies across rays p + s q (its frame, as iceCoreOpticalDepth's): a
+// factor of the ray's optical depth from the point where it passes nearest the centre. Clumps of
+// that point, and streaks of its direction from the centre, so that seen through the ice the cloud
+// runs in fine streaks towards its middle (the freezing fronts pushed the air inwards along them)
+// instead of glowing evenly; 1 for rays through the centre.
+float iceCoreStreaks(vec3 p, vec3 q)
+{
+  vec3 nearest = p - dot(p, q) / max(dot(q, q), 1.0e-12) * q;
+  float r = length(nearest);
+  vec3 towards = nearest / max(r, 1.0e-6);
+  float clumps = iceLatticeNoise(2.8 * nearest + vec3(1.7, 0.0, 3.1));
+  float streaks = iceLatticeNoise((21.0 + 6.4 * r) * towards);
+  float structure =
+    mix(0.6, 1.3, smoothstep(-0.3, 0.3, (clumps - 0.5) + 0.5 * (streaks - 0.5)));
+  return mix(1.0, structure, smoothstep(0.05, 0.5, r));
+}
+
 // The eye ray's path through the ice, from the front surface at view depth frontDepth to the back
 // face behind it at backDepth (0: none, no path). View depth grows by e . viewDirection per unit
 // of the ray; the floor keeps a ray grazing the view plane finite.

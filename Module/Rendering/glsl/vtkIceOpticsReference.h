@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <utility>
 
@@ -157,6 +158,57 @@ inline double CoreOpticalDepth(const Vec3& p, const Vec3& q, double sEnd, double
     (std::erf(speed * sEnd + along) - std::erf(along));
 }
 
+// iceMix: lowbias32.
+inline std::uint32_t Mix(std::uint32_t x)
+{
+  x ^= x >> 16U;
+  x *= 0x7feb352dU;
+  x ^= x >> 15U;
+  x *= 0x846ca68bU;
+  x ^= x >> 16U;
+  return x;
+}
+
+// iceLatticeNoise: value noise in [0, 1) from hashed lattice corners, eased trilinear.
+inline double LatticeNoise(const Vec3& x)
+{
+  const Vec3 i = glm::floor(x);
+  const Vec3 f = x - i;
+  const Vec3 u = f * f * (3.0 - 2.0 * f);
+  double corner[8];
+  for (int k = 0; k < 8; ++k)
+  {
+    const std::uint32_t cx = static_cast<std::uint32_t>(static_cast<int>(i.x) + (k & 1));
+    const std::uint32_t cy = static_cast<std::uint32_t>(static_cast<int>(i.y) + ((k >> 1) & 1));
+    const std::uint32_t cz = static_cast<std::uint32_t>(static_cast<int>(i.z) + (k >> 2));
+    corner[k] = static_cast<double>(Mix(cx + Mix(cy + Mix(cz))) >> 8U) / 16777216.0;
+  }
+  const auto lerp = [](double a, double b, double t) { return a + (b - a) * t; };
+  const double y0 = lerp(lerp(corner[0], corner[1], u.x), lerp(corner[2], corner[3], u.x), u.y);
+  const double y1 = lerp(lerp(corner[4], corner[5], u.x), lerp(corner[6], corner[7], u.x), u.y);
+  return lerp(y0, y1, u.z);
+}
+
+inline double SmoothStep(double edge0, double edge1, double x)
+{
+  const double t = std::min(1.0, std::max(0.0, (x - edge0) / (edge1 - edge0)));
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// iceCoreStreaks: the factor of the core's optical depth along the ray p + s q (its frame), from
+// the point where the ray passes nearest the centre.
+inline double CoreStreaks(const Vec3& p, const Vec3& q)
+{
+  const Vec3 nearest = p - glm::dot(p, q) / std::max(glm::dot(q, q), 1.0e-12) * q;
+  const double r = glm::length(nearest);
+  const Vec3 towards = nearest / std::max(r, 1.0e-6);
+  const double clumps = LatticeNoise(2.8 * nearest + Vec3(1.7, 0.0, 3.1));
+  const double streaks = LatticeNoise((21.0 + 6.4 * r) * towards);
+  const double structure =
+    0.6 + 0.7 * SmoothStep(-0.3, 0.3, (clumps - 0.5) + 0.5 * (streaks - 0.5));
+  return 1.0 + (structure - 1.0) * SmoothStep(0.05, 0.5, r);
+}
+
 // The eye ray's path through the ice between the view depths of its front and back faces
 // (iceEyePathLength); backDepth 0: no back face, no path.
 inline double EyePathLength(
@@ -195,7 +247,8 @@ Vec3 ShadeWithDirection(const Vec3& e, const Vec3& nFront, const Vec3& refracted
 
 // The light traced through the ice (iceTracedRefraction of vtkIceTraceFS.glsl): refracted in at
 // `position`, then at each of up to maxBounces hits from inside Fresnel's share reflects on and the
-// rest refracts out; at the last hit all that is left leaves, as does a ray that meets nothing.
+// rest refracts out (into water at a wet base); at the last hit all that is left leaves, as does
+// a ray that meets nothing.
 // `hit(origin, direction, tMin, t, n, face)` is the nearest triangle (vtkIceTriangleBVH::Intersect,
 // in world coordinates here) with its interpolated and its own normal; tMin the shader's epsilon.
 // The milky core on the traced path (iceTraceCore* of vtkIceTraceFS.glsl), here in world
@@ -221,11 +274,16 @@ struct TracedCracks
   std::function<bool(const Vec3&, const Vec3&, double, double&, Vec3&, double&)> Nearest;
 };
 
-inline double SmoothStep(double edge0, double edge1, double x)
+// The ice's base in water (ICE_TRACE_WET_BASE of vtkIceTraceFS.glsl, vtkIceMapper::WetBase), here
+// in world y: fully wet below Wet, dry above Dry; Wet == Dry (the default): none.
+struct TracedWetBase
 {
-  const double t = std::min(1.0, std::max(0.0, (x - edge0) / (edge1 - edge0)));
-  return t * t * (3.0 - 2.0 * t);
-}
+  double Wet = 0.0;
+  double Dry = 0.0;
+};
+
+// iceWaterIndex: the index of refraction of the water the base stands in.
+constexpr double WaterIndex = 1.33;
 
 // iceTraceCutoff: less light than this left inside leaves along the reflected ray.
 constexpr double TraceCutoff = 0.005;
@@ -233,7 +291,8 @@ constexpr double TraceCutoff = 0.005;
 template <typename Hit, typename Environment>
 Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, int maxBounces,
   double tMin, const Material& material, const Hit& hit, const Environment& environment,
-  const TracedCore& core = TracedCore(), const TracedCracks& cracks = TracedCracks())
+  const TracedCore& core = TracedCore(), const TracedCracks& cracks = TracedCracks(),
+  const TracedWetBase& base = TracedWetBase())
 {
   const double eta = material.RefractionRatio;
   Vec3 d = Refract(e, nFront, eta);
@@ -251,8 +310,11 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
     }
     if (bounce > 1 && core.Density > 0.0)
     {
+      const Vec3 origin = (p - core.Center) * core.Scale;
+      const Vec3 direction = d * core.Scale;
       const double cover = 1.0 -
-        std::exp(-CoreOpticalDepth((p - core.Center) * core.Scale, d * core.Scale, t, core.Density));
+        std::exp(-CoreOpticalDepth(origin, direction, t, core.Density) *
+          CoreStreaks(origin, direction));
       light += throughput * cover * core.Colour;
       throughput *= 1.0 - cover;
     }
@@ -281,14 +343,19 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
     face = glm::normalize(face);
     face = glm::dot(face, n) < 0.0 ? -face : face;
     const Vec3 leaving = Refract(d, -n, 1.0 / eta);
+    const double wet = base.Dry > base.Wet ? 1.0 - SmoothStep(base.Wet, base.Dry, p.y) : 0.0;
+    const double etaWater = 1.0 / (eta * WaterIndex);
+    const Vec3 leavingWet = Refract(d, -n, etaWater);
     if (bounce == maxBounces)
     {
-      d = leaving;
+      d = wet > 0.5 ? leavingWet : leaving;
       break;
     }
     const double r = DielectricReflectance(glm::dot(d, n), 1.0 / eta);
-    light += throughput * (1.0 - r) * environment(leaving);
-    throughput *= r;
+    const double rWet = DielectricReflectance(glm::dot(d, n), etaWater);
+    light += throughput *
+      ((1.0 - wet) * (1.0 - r) * environment(leaving) + wet * (1.0 - rWet) * environment(leavingWet));
+    throughput *= r + (rWet - r) * wet;
     d = ReflectInside(d, n, face);
     if (std::max({ throughput.r, throughput.g, throughput.b }) < TraceCutoff)
     {

@@ -33,6 +33,11 @@ uniform vec3 iceTraceCoreColour;
 // the grid's walk is the cost. Later segments carry little light.
 const float iceTraceBubbleReach = 1.7;
 #endif
+#ifdef ICE_TRACE_WET_BASE
+// vtkIceMapper::WetBase: where the ice stands in water, in model y: fully wet below x, dry above y.
+uniform vec2 iceTraceWetBase;
+const float iceWaterIndex = 1.33;
+#endif
 #ifdef ICE_TRACE_CRACKS
 // The cracks on the same segments (vtkIceCracksFS.glsl's search, declared before this): the
 // share of a thin gap's reflectance a crack mirrors (CrackIntensity x CrackReflection).
@@ -284,9 +289,12 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool w
     if (bounce > 1 && iceTraceCoreDensity > 0.0)
     {
       // The core scatters its white light towards the eye and hides what lies behind it.
-      float cover = 1.0 - exp(-iceCoreOpticalDepth(
-        ((iceTraceWCMC * vec4(p, 1.0)).xyz - iceTraceCoreCenter) * iceTraceCoreScale,
-        dModel * iceTraceCoreScale, t, iceTraceCoreDensity));
+      vec3 coreOrigin =
+        ((iceTraceWCMC * vec4(p, 1.0)).xyz - iceTraceCoreCenter) * iceTraceCoreScale;
+      vec3 coreDirection = dModel * iceTraceCoreScale;
+      float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, t, iceTraceCoreDensity);
+      depth *= iceCoreStreaks(coreOrigin, coreDirection);
+      float cover = 1.0 - exp(-depth);
       light += throughput * cover * iceTraceCoreColour;
       throughput *= 1.0 - cover;
     }
@@ -355,14 +363,32 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool w
     vec3 leaving = iceRefract(d, -n, 1.0 / eta);
     float spreadLeaving = iceRefractionSpread(dot(d, n), dot(leaving, n), 1.0 / eta);
     float spread2Leaving = spread2 + spreadLeaving * spreadLeaving;
+#ifdef ICE_TRACE_WET_BASE
+    // At the base the light meets water: refracted out into it, barely turned, never reflected
+    // totally; fading to air over the wet band's top half.
+    float wet = 1.0 - smoothstep(iceTraceWetBase.x, iceTraceWetBase.y, (iceTraceWCMC * vec4(p, 1.0)).y);
+    float etaWater = 1.0 / (eta * iceWaterIndex);
+    vec3 leavingWet = iceRefract(d, -n, etaWater);
+#endif
     if (bounce == iceTraceMaxBounces)
     {
       d = leaving;
+#ifdef ICE_TRACE_WET_BASE
+      d = wet > 0.5 ? leavingWet : leaving;
+#endif
       spread2 = spread2Leaving;
       break;
     }
     vec2 rt = iceTracedInterface(dot(d, n), 1.0 / eta);
+#ifdef ICE_TRACE_WET_BASE
+    vec2 rtWet = iceTracedInterface(dot(d, n), etaWater);
+    light += throughput *
+      ((1.0 - wet) * rt.y * iceTracedEnvironmentColor(leaving, spread2Leaving) +
+        wet * rtWet.y * iceTracedEnvironmentColor(leavingWet, spread2Leaving));
+    rt.x = mix(rt.x, rtWet.x, wet);
+#else
     light += throughput * rt.y * iceTracedEnvironmentColor(leaving, spread2Leaving);
+#endif
     throughput *= rt.x;
     d = iceReflectInside(d, n, face);
     spread2 += 4.0; // the mirror inside turns the ray by twice its facet's tilt
