@@ -46,6 +46,8 @@ constexpr double CoreDrop = 0.12;
 constexpr double BubbleCells = 56.0;
 constexpr double BubbleCoreRadius = 0.6;
 constexpr double BubbleStreams = 0.015;
+// The largest share of the cells that hold a bubble of the cloud, even where it is densest.
+constexpr double BubbleFull = 0.6;
 constexpr double BubbleDepthFade = 1.2;
 
 // The density of the core's air (iceCoreDensity) that gives a ray through its centre the optical
@@ -105,6 +107,7 @@ inline std::string Defines()
           << CoreColour[2] << ")\n"
           << "#define ICE_CORE_RIM_AIR " << CoreRimAir << "\n"
           << "#define ICE_BUBBLE_STREAMS " << BubbleStreams << "\n"
+          << "#define ICE_BUBBLE_FULL " << BubbleFull << "\n"
           << "#define ICE_CRACK_MIRROR_BUMPS " << CrackMirrorBumps << "\n"
           << "#define ICE_CRACK_EDGE_WIDTH " << CrackEdgeWidth << "\n"
           << "#define ICE_CRACK_EDGE " << CrackEdge << "\n"

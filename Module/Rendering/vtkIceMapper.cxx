@@ -664,10 +664,11 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
   program->SetUniformi("iceTraceAntiAliasing", this->TraceAntiAliasing ? 1 : 0);
   if (program->IsUniformUsed("iceTraceWetBase"))
   {
-    // The lowest 4 % of the height: wet in its lower half, drying over its upper half.
-    const double band = 0.04 * (bounds[3] - bounds[2]);
-    const float wetBase[2] = { static_cast<float>(bounds[2] + 0.5 * band),
-      static_cast<float>(bounds[2] + band) };
+    // Wet up to 6 % of the height, drying by 10 %: melt water held by capillarity in the wedge
+    // between a rounded bottom edge and the ground wets that edge, not only the flat base.
+    const double height = bounds[3] - bounds[2];
+    const float wetBase[2] = { static_cast<float>(bounds[2] + 0.06 * height),
+      static_cast<float>(bounds[2] + 0.1 * height) };
     program->SetUniform2f("iceTraceWetBase", wetBase);
   }
 

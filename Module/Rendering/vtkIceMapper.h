@@ -151,8 +151,8 @@ public:
   ///@{
   /**
    * Whether the ice stands in its melt water, on a surface below it along the model's y axis (the
-   * trace only: MaxBounces above 1). Light inside that meets the ice's base, its faces in the
-   * lowest 4 % of its height (fading to dry over the upper half of that band), leaves into water
+   * trace only: MaxBounces above 1). Light inside that meets the ice's base, its faces up to 6 %
+   * of its height (drying between 6 % and 10 %: the water wets a rounded bottom edge), leaves into water
    * instead of air: ice and water refract nearly alike (1.31 and 1.33), so nothing reflects totally
    * there and the base shows what lies under the ice (the environment below it, the ground of a
    * dynamic cube map) instead of mirroring the ice's inside, as ice on a wet surface does. Default

@@ -827,7 +827,7 @@ bool AntiAliased()
     ok;
 }
 
-// The cube standing in water (WetBase): its lowest 4 % of height, wet in the lower half, the
+// The cube standing in water (WetBase): wet up to 6 % of its height, dry above 10 %, the
 // cube's bottom face among it. Seen from above, the light inside meets the bottom at glancing
 // angles: dry, it reflects totally; wet, most of it leaves into the water.
 bool WetBase()
@@ -836,9 +836,8 @@ bool WetBase()
   Scene scene(Cube(), camera);
   scene.Mapper->SetMaxBounces(6);
   scene.Mapper->WetBaseOn();
-  const double band = 0.04 * 1.6;
-  scene.WetBase.Wet = -0.8 + 0.5 * band;
-  scene.WetBase.Dry = -0.8 + band;
+  scene.WetBase.Wet = -0.8 + 0.06 * 1.6;
+  scene.WetBase.Dry = -0.8 + 0.1 * 1.6;
   const IceTest::Image image = scene.Render();
   bool ok =
     IceTest::Expect(IceTest::TakeGLErrors(scene.Window).empty(), "wet cube: no OpenGL error");

@@ -5,9 +5,9 @@
 The scene is ice-render's default (the `cube` model on the ground in blender-data's `forest`
 panorama, its camera, filmic tone mapping), with the ice as nature makes it:
 - the rounded cube itself, index of refraction 1.31, a faint blue absorption (the ice-cube
-  preset's attenuation colour 0.8, 0.92, 0.98 at 0.7);
-- standing in its melt water: the faces of its base (vtkIceMapper::WetBase's band, the lowest
-  4 % of its height, up to the middle of its fade) meet water (1.33) instead of air;
+  preset's attenuation colour 0.8, 0.92, 0.98 at 0.6);
+- standing in its melt water: the faces of its base (vtkIceMapper::WetBase's band: wet up to 6 %
+  of its height, dry above 10 %; up to the middle of its fade) meet water (1.33) instead of air;
 - a core of a few hundred small air bubbles (mixed sizes, small ones most, thickest at the
   centre) and a few vertical streams of them;
 - two thin planar air cracks with irregular outlines;
@@ -32,9 +32,9 @@ WIDTH, HEIGHT = 512, 384
 CAMERA = ((3.2, 1.4, 5.6), (0.0, -0.2, 0.0))  # ice-render's with a ground (IceScene.cxx)
 VIEW_ANGLE = 32.0
 IOR = 1.31
-ATTENUATION = ((0.8, 0.92, 0.98), 0.7)  # the ice-cube preset's colour at its distance
+ATTENUATION = ((0.8, 0.92, 0.98), 0.6)  # the ice-cube preset's colour at its distance
 WATER_IOR = 1.33
-WET_BAND = 0.04  # vtkIceMapper::WetBase: the lowest 4 % of the ice's height
+WET_BAND = (0.06, 0.1)  # vtkIceMapper::WetBase: wet up to 6 % of the ice's height, dry above 10 %
 GROUND_HALF_SIZE = 12.0  # IceGround: 6 model extents
 PANORAMA = "/usr/share/blender/datafiles/studiolights/world/forest.exr"
 
@@ -198,11 +198,11 @@ def render(folder, spp, seed):
     rng = numpy.random.default_rng(seed)
     mesh = numpy.load(os.path.join(folder, "ice-cube.npz"))
     bottom = float(mesh["points"][:, 1].min())
-    # The base in water: the triangles whose centre lies below the middle of the wet band's fade
-    # (wet below half the band, dry above all of it), as one mesh whose outside is water.
+    # The base in water: the triangles whose centre lies below the middle of the wet band's fade,
+    # as one mesh whose outside is water.
     height = float(mesh["points"][:, 1].max()) - bottom
     centres = mesh["points"][mesh["triangles"]][:, :, 1].mean(axis=1)
-    wet = centres < bottom + 0.75 * WET_BAND * height
+    wet = centres < bottom + 0.5 * (WET_BAND[0] + WET_BAND[1]) * height
     write_ply(os.path.join(folder, "ice-cube.ply"), mesh["points"], mesh["triangles"][~wet],
               mesh["normals"])
     write_ply(os.path.join(folder, "ice-base.ply"), mesh["points"], mesh["triangles"][wet],

@@ -187,8 +187,9 @@ float iceLatticeNoise(vec3 x)
   for (int k = 0; k < 8; ++k)
   {
     ivec3 at = c + ivec3(k & 1, (k >> 1) & 1, k >> 2);
-    corner[k] = float(iceMix(uint(at.x) + iceMix(uint(at.y) + iceMix(uint(at.z)))) >> 8u) *
-      (1.0 / 16777216.0);
+    // One mix a corner: the coordinates spread by large odd factors first.
+    uint h = iceMix(uint(at.x) * 0x8da6b343u ^ uint(at.y) * 0xd8163841u ^ uint(at.z) * 0xcb1ab31fu);
+    corner[k] = float(h >> 8u) * (1.0 / 16777216.0);
   }
   vec4 y0 = mix(vec4(corner[0], corner[2], corner[4], corner[6]),
     vec4(corner[1], corner[3], corner[5], corner[7]), u.x);
@@ -198,18 +199,19 @@ float iceLatticeNoise(vec3 x)
 
 // How the milky core's air varies across rays p + s q (its frame, as iceCoreOpticalDepth's): a
 // factor of the ray's optical depth from the point where it passes nearest the centre. Clumps of
-// that point, and streaks of its direction from the centre, so that seen through the ice the cloud
-// runs in fine streaks towards its middle (the freezing fronts pushed the air inwards along them)
-// instead of glowing evenly; 1 for rays through the centre.
+// that point (two scales), and faint streaks of its direction from the centre (the freezing fronts
+// pushed the air inwards along them), so that seen through the ice the cloud is uneven instead of
+// glowing evenly; 1 for rays through the centre.
 float iceCoreStreaks(vec3 p, vec3 q)
 {
   vec3 nearest = p - dot(p, q) / max(dot(q, q), 1.0e-12) * q;
   float r = length(nearest);
   vec3 towards = nearest / max(r, 1.0e-6);
-  float clumps = iceLatticeNoise(2.8 * nearest + vec3(1.7, 0.0, 3.1));
+  float clumps = iceLatticeNoise(2.8 * nearest + vec3(1.7, 0.0, 3.1)) +
+    0.5 * iceLatticeNoise(6.1 * nearest + vec3(0.4, 5.3, 2.2));
   float streaks = iceLatticeNoise((21.0 + 6.4 * r) * towards);
   float structure =
-    mix(0.6, 1.3, smoothstep(-0.3, 0.3, (clumps - 0.5) + 0.5 * (streaks - 0.5)));
+    mix(0.5, 1.35, smoothstep(-0.3, 0.3, (clumps - 0.75) + 0.2 * (streaks - 0.5)));
   return mix(1.0, structure, smoothstep(0.05, 0.5, r));
 }
 

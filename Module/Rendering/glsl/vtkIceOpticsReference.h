@@ -181,7 +181,8 @@ inline double LatticeNoise(const Vec3& x)
     const std::uint32_t cx = static_cast<std::uint32_t>(static_cast<int>(i.x) + (k & 1));
     const std::uint32_t cy = static_cast<std::uint32_t>(static_cast<int>(i.y) + ((k >> 1) & 1));
     const std::uint32_t cz = static_cast<std::uint32_t>(static_cast<int>(i.z) + (k >> 2));
-    corner[k] = static_cast<double>(Mix(cx + Mix(cy + Mix(cz))) >> 8U) / 16777216.0;
+    const std::uint32_t h = Mix(cx * 0x8da6b343U ^ cy * 0xd8163841U ^ cz * 0xcb1ab31fU);
+    corner[k] = static_cast<double>(h >> 8U) / 16777216.0;
   }
   const auto lerp = [](double a, double b, double t) { return a + (b - a) * t; };
   const double y0 = lerp(lerp(corner[0], corner[1], u.x), lerp(corner[2], corner[3], u.x), u.y);
@@ -202,10 +203,11 @@ inline double CoreStreaks(const Vec3& p, const Vec3& q)
   const Vec3 nearest = p - glm::dot(p, q) / std::max(glm::dot(q, q), 1.0e-12) * q;
   const double r = glm::length(nearest);
   const Vec3 towards = nearest / std::max(r, 1.0e-6);
-  const double clumps = LatticeNoise(2.8 * nearest + Vec3(1.7, 0.0, 3.1));
+  const double clumps = LatticeNoise(2.8 * nearest + Vec3(1.7, 0.0, 3.1)) +
+    0.5 * LatticeNoise(6.1 * nearest + Vec3(0.4, 5.3, 2.2));
   const double streaks = LatticeNoise((21.0 + 6.4 * r) * towards);
   const double structure =
-    0.6 + 0.7 * SmoothStep(-0.3, 0.3, (clumps - 0.5) + 0.5 * (streaks - 0.5));
+    0.5 + 0.85 * SmoothStep(-0.3, 0.3, (clumps - 0.75) + 0.2 * (streaks - 0.5));
   return 1.0 + (structure - 1.0) * SmoothStep(0.05, 0.5, r);
 }
 
