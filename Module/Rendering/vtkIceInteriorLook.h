@@ -48,7 +48,7 @@ constexpr double BubbleCoreRadius = 0.6;
 constexpr double BubbleStreams = 0.015;
 // The largest share of the cells that hold a bubble of the cloud, even where it is densest.
 constexpr double BubbleFull = 0.6;
-constexpr double BubbleDepthFade = 1.2;
+constexpr double BubbleDepthFade = 2.0;
 
 // The density of the core's air (iceCoreDensity) that gives a ray through its centre the optical
 // depth CoreOpticalDepth * milkiness: the density's integral along that ray is sqrt(pi).

@@ -670,6 +670,17 @@ void vtkIceMapper::SetTraceUniforms(vtkShaderProgram* program, vtkRenderer* ren,
     const float wetBase[2] = { static_cast<float>(bounds[2] + 0.06 * height),
       static_cast<float>(bounds[2] + 0.1 * height) };
     program->SetUniform2f("iceTraceWetBase", wetBase);
+    // The ice's centre in the world: the water film is thin, so the light that leaves into it
+    // comes from the ground where it leaves, seen from there (the dynamic cube map's centre).
+    double centre[4] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+      0.5 * (bounds[4] + bounds[5]), 1.0 };
+    if (!act->GetIsIdentity())
+    {
+      act->GetMatrix()->MultiplyPoint(centre, centre);
+    }
+    const float centreWorld[3] = { static_cast<float>(centre[0] / centre[3]),
+      static_cast<float>(centre[1] / centre[3]), static_cast<float>(centre[2] / centre[3]) };
+    program->SetUniform3f("iceTraceWetBaseCentre", centreWorld);
   }
 
   vtkTextureObject* active[6] = { nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };

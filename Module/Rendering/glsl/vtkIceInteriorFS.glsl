@@ -128,7 +128,9 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
           (viewDepth + sClosest * along), 1.0e-6) * modelPerWorld / iceBubbleCell;
       float cover = clamp((radius + pixel - miss) / (2.0 * pixel), 0.0, 1.0) *
         min(1.0, radius * radius / (pixel * pixel));
-      float rim = mix(0.3, 0.8, smoothstep(0.3, 1.0, miss / radius));
+      // Small bubbles scatter less of the light that reaches them: dimmer specks.
+      float rim = mix(0.3, 0.8, smoothstep(0.3, 1.0, miss / radius)) *
+        mix(0.45, 1.0, smoothstep(0.04, 0.2, radius));
       float seen = exp(-iceBubbleFade * sClosest * modelPerWorld -
         iceCoreOpticalDepth(coreOrigin, coreDirection, max(sClosest, 0.0), iceCoreDensity));
       float a = sClosest > 0.0 && sClosest < sBack ? cover * rim * seen : 0.0;

@@ -277,11 +277,13 @@ struct TracedCracks
 };
 
 // The ice's base in water (ICE_TRACE_WET_BASE of vtkIceTraceFS.glsl, vtkIceMapper::WetBase), here
-// in world y: fully wet below Wet, dry above Dry; Wet == Dry (the default): none.
+// in world y: fully wet below Wet, dry above Dry; Wet == Dry (the default): none. The light that
+// leaves into the water comes from the ground where it leaves, seen from the ice's Centre.
 struct TracedWetBase
 {
   double Wet = 0.0;
   double Dry = 0.0;
+  Vec3 Centre = Vec3(0.0);
 };
 
 // iceWaterIndex: the index of refraction of the water the base stands in.
@@ -347,7 +349,7 @@ Vec3 TracedRefraction(const Vec3& e, const Vec3& position, const Vec3& nFront, i
     const Vec3 leaving = Refract(d, -n, 1.0 / eta);
     const double wet = base.Dry > base.Wet ? 1.0 - SmoothStep(base.Wet, base.Dry, p.y) : 0.0;
     const double etaWater = 1.0 / (eta * WaterIndex);
-    const Vec3 leavingWet = Refract(d, -n, etaWater);
+    const Vec3 leavingWet = glm::normalize(p - base.Centre);
     if (bounce == maxBounces)
     {
       d = wet > 0.5 ? leavingWet : leaving;

@@ -36,6 +36,7 @@ const float iceTraceBubbleReach = 1.7;
 #ifdef ICE_TRACE_WET_BASE
 // vtkIceMapper::WetBase: where the ice stands in water, in model y: fully wet below x, dry above y.
 uniform vec2 iceTraceWetBase;
+uniform vec3 iceTraceWetBaseCentre; // the ice's centre, world coordinates
 const float iceWaterIndex = 1.33;
 #endif
 #ifdef ICE_TRACE_CRACKS
@@ -368,7 +369,9 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool w
     // totally; fading to air over the wet band's top half.
     float wet = 1.0 - smoothstep(iceTraceWetBase.x, iceTraceWetBase.y, (iceTraceWCMC * vec4(p, 1.0)).y);
     float etaWater = 1.0 / (eta * iceWaterIndex);
-    vec3 leavingWet = iceRefract(d, -n, etaWater);
+    // Through the thin film the light comes from the ground where it leaves: seen from the
+    // ice's centre, not along its own direction (near the horizon that was the far landscape).
+    vec3 leavingWet = normalize(p - iceTraceWetBaseCentre);
 #endif
     if (bounce == iceTraceMaxBounces)
     {
