@@ -147,7 +147,7 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
   const std::vector<double> tight = Blur(cover, texels, 0.02 * extent / texel);
   const std::vector<double> wide = Blur(cover, texels, 0.25 * extent / texel);
   // The melt water: a pool a little wider than the foot.
-  const std::vector<double> pool = Blur(cover, texels, 0.15 * extent / texel);
+  const std::vector<double> pool = Blur(cover, texels, 0.18 * extent / texel);
   vtkNew<vtkImageData> image;
   image->SetDimensions(texels, texels, 1);
   image->AllocateScalars(VTK_DOUBLE, 3);
@@ -167,7 +167,7 @@ vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize,
       const double shadow = 0.55 * std::max(outline, tight[k]) + 0.45 * wide[k];
       out[3 * k] = std::min(1.0, shadow * (1.0 - under));
       // Only near the foot: no wet spots of noise alone far from the ice.
-      out[3 * k + 1] = std::clamp((edge - 0.05) / 0.08, 0.0, 1.0) * std::min(1.0, 20.0 * pool[k]);
+      out[3 * k + 1] = std::clamp((edge - 0.08) / 0.05, 0.0, 1.0) * std::min(1.0, 20.0 * pool[k]);
       // The light the ice gathers, uneven as its surface is.
       const double ripples[3] = { 3.0 * at[0], 0.0, 3.0 * at[2] };
       out[3 * k + 2] =
@@ -291,14 +291,16 @@ vtkSmartPointer<vtkActor> MakeGround(
       const double focus = std::clamp((r * halfSize / extent - 1.0) / 2.0, 0.0, 1.0);
       const size_t k = static_cast<size_t>(j) * fine + i;
       const double stoneHere = sharp[k] + focus * (soft[k] - sharp[k]);
-      // Wet ground is darker: the water film lets less of the light the stone scatters out, and
-      // mirrors the surroundings instead (an eighth of them at the camera's glancing view), less
-      // where the ice hides them: the sheen must not wash out the contact shadow.
+      // Wet ground is darker: the water film lets half the light the stone scatters out, and
+      // mirrors the surroundings instead (Fresnel's share for water is about 0.15 at the camera's
+      // glancing view, 70 degrees), less where the ice hides them: the sheen must not wash out
+      // the contact shadow.
+      // Fainter, the pool read as the shadow's edge, not as water.
       const double shadowed = shadowAt(i, j, 0);
       const double wet = shadowAt(i, j, 1);
       const double shade =
-        (1.0 - strength * shadowed) * (1.0 - 0.3 * wet) + caustic * shadowAt(i, j, 2);
-      const double mirrored = 0.12 * wet * (1.0 - shadowed);
+        (1.0 - strength * shadowed) * (1.0 - 0.5 * wet) + caustic * shadowAt(i, j, 2);
+      const double mirrored = 0.15 * wet * (1.0 - shadowed);
       for (int c = 0; c < 3; ++c)
       {
         texel[c] = static_cast<unsigned char>(std::lround(

@@ -36,6 +36,9 @@ ATTENUATION = ((0.8, 0.92, 0.98), 0.6)  # the ice-cube preset's colour at its di
 WATER_IOR = 1.33
 WET_BAND = (0.06, 0.1)  # vtkIceMapper::WetBase: wet up to 6 % of the ice's height, dry above 10 %
 GROUND_HALF_SIZE = 12.0  # IceGround: 6 model extents
+# IceGround's melt water: the ice's footprint blurred by this fraction of its extent, wet where
+# that exceeds the first number, fully over the second more (without IceGround's uneven edge).
+POOL = (0.18, 0.08, 0.05)
 PANORAMA = "/usr/share/blender/datafiles/studiolights/world/forest.exr"
 
 
@@ -191,6 +194,23 @@ def ground_albedo(panorama):
     return numpy.clip(math.pi * radiance / numpy.maximum(irradiance, 1.0e-9), 0.0, 1.0).tolist()
 
 
+def melt_pool(points, texels):
+    """IceGround's melt water on the ground's texture (texels across 2 GROUND_HALF_SIZE): the
+    footprint, the ice's base as a square, blurred (a product of erf steps), wet above a level."""
+    bottom = points[:, 1].min()
+    extent = max(numpy.ptp(points[:, 0]), numpy.ptp(points[:, 2]))
+    foot = points[points[:, 1] < bottom + 0.05 * numpy.ptp(points[:, 1])]
+    half = 0.5 * (numpy.ptp(foot[:, 0]) + numpy.ptp(foot[:, 2])) / 2.0
+    sigma = POOL[0] * extent
+    x = ((numpy.arange(texels) + 0.5) / texels - 0.5) * 2.0 * GROUND_HALF_SIZE
+    erf = numpy.vectorize(math.erf)
+    step = 0.5 * (erf((half - x) / (sigma * math.sqrt(2.0))) +
+                  erf((half + x) / (sigma * math.sqrt(2.0))))
+    pool = step[None, :] * step[:, None]
+    return (numpy.clip((pool - POOL[1]) / POOL[2], 0.0, 1.0) *
+            numpy.minimum(1.0, 20.0 * pool)).astype(numpy.float32)
+
+
 def render(folder, spp, seed):
     import mitsuba
 
@@ -237,12 +257,14 @@ def render(folder, spp, seed):
     }
     # The ground: of the colour the panorama shows its own ground in (ground_albedo), lit by the
     # panorama, fading into it from 0.35 to 0.95 of its half size
-    # as IceGround's does (smoothstep), slightly below the ice's foot.
+    # as IceGround's does (smoothstep), slightly below the ice's foot; where the melt water lies,
+    # the same stone under a film of water (a dielectric coat of index 1.33 on it).
     texels = 512
     x = ((numpy.arange(texels) + 0.5) / texels - 0.5) * 2.0
     r = numpy.hypot(x[None, :], x[:, None])
     t = numpy.clip((r - 0.35) / 0.6, 0.0, 1.0)
     fade = (1.0 - t * t * (3.0 - 2.0 * t)).astype(numpy.float32)
+    albedo = ground_albedo(panorama)
     scene["ground"] = {
         "type": "rectangle",
         "to_world": mitsuba.ScalarTransform4f().translate([0.0, bottom - 1.0e-3, 0.0]) @
@@ -251,8 +273,14 @@ def render(folder, spp, seed):
         "bsdf": {"type": "mask",
                  "opacity": {"type": "bitmap", "bitmap": mitsuba.Bitmap(fade[..., None]),
                              "raw": True},
-                 "bsdf": {"type": "diffuse",
-                          "reflectance": {"type": "rgb", "value": ground_albedo(panorama)}}},
+                 "bsdf": {"type": "blendbsdf",
+                          "weight": {"type": "bitmap", "raw": True, "bitmap": mitsuba.Bitmap(
+                              melt_pool(mesh["points"], 2048)[..., None])},
+                          "bsdf_0": {"type": "diffuse", "reflectance": {"type": "rgb",
+                                                                        "value": albedo}},
+                          "bsdf_1": {"type": "plastic", "int_ior": WATER_IOR, "nonlinear": True,
+                                     "diffuse_reflectance": {"type": "rgb",
+                                                             "value": albedo}}}},
     }
     air = {"type": "dielectric", "int_ior": 1.0, "ext_ior": IOR}
     cracks = [(numpy.array((0.12, 0.05, -0.1)), numpy.array((0.9, 0.35, 0.25)), 0.42),
