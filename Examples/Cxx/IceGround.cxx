@@ -248,6 +248,8 @@ vtkSmartPointer<vtkActor> MakeGround(
   // light it gathers under itself brightens the ground by up to this much more.
   const double strength = 0.25;
   const double caustic = 0.6;
+  // Water's share of reflection at the camera's glancing view of the pool (about 72 degrees).
+  const double reflectance = 0.15;
   // The stone's brightness first, then blurred: its single grains a few pixels wide at the ice's
   // distance, softened to what a photograph resolves, and more with the distance from the ice, as
   // a camera focused on the ice blurs them (and as the panorama behind is blurred).
@@ -292,21 +294,22 @@ vtkSmartPointer<vtkActor> MakeGround(
       const size_t k = static_cast<size_t>(j) * fine + i;
       const double stoneHere = sharp[k] + focus * (soft[k] - sharp[k]);
       // Wet ground is darker: the water film lets half the light the stone scatters out, and
-      // mirrors the surroundings instead (Fresnel's share for water is about 0.15 at the camera's
-      // glancing view, 70 degrees), less where the ice hides them: the sheen must not wash out
-      // the contact shadow.
-      // Fainter, the pool read as the shadow's edge, not as water.
+      // mirrors the surroundings instead, less where the ice hides them (there it mirrors the
+      // ice): the sheen must not wash out the contact shadow. Fainter, the pool read as the
+      // shadow's edge, not as water.
       const double shadowed = shadowAt(i, j, 0);
       const double wet = shadowAt(i, j, 1);
       const double shade =
         (1.0 - strength * shadowed) * (1.0 - 0.5 * wet) + caustic * shadowAt(i, j, 2);
-      const double mirrored = 0.15 * wet * (1.0 - shadowed);
+      const double mirrored = reflectance * wet * (1.0 - shadowed);
       for (int c = 0; c < 3; ++c)
       {
         texel[c] = static_cast<unsigned char>(std::lround(
           255.0 * std::clamp(colour[c] * stoneHere * shade + mirrored * sheen[c], 0.0, 1.0)));
       }
-      texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade));
+      // What lies below the ground shows through the pool by the same share: the ice's mirror
+      // image there (IceScene::AddMirrorImage).
+      texel[3] = static_cast<unsigned char>(std::lround(255.0 * fade * (1.0 - reflectance * wet)));
     }
   }
   vtkNew<vtkTexture> texture;

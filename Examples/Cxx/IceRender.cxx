@@ -129,6 +129,15 @@ int main(int argc, char* argv[])
     renderer->ResetCamera(ice->GetBounds());
   }
   vtkIceLookTable::ApplyAll(target, options.Look);
+  // Standing in its melt pool, the ice shows in it, with the same look.
+  vtkActor* image = sceneOptions.Ground ? IceScene::AddMirrorImage(renderer, model) : nullptr;
+  vtkIceLookTable::Target mirror = target;
+  mirror.Mapper = image ? vtkIceMapper::SafeDownCast(image->GetMapper()) : nullptr;
+  if (mirror.Mapper)
+  {
+    vtkIceLookTable::ApplyAll(mirror, options.Look);
+    IceScene::ShowMirrorImage(image, vtkIceLookTable::Value(target, "debug-view"));
+  }
   // The HDR scene (a photographed environment is brighter than white) tone mapped: VTK's pass
   // around the ice pass, only where the look asks for a curve.
   if (vtkIceLookTable::AsksForToneMapping(toneMapping))
@@ -154,6 +163,10 @@ int main(int argc, char* argv[])
     vtkNew<vtkRenderWindowInteractor> interactor;
     vtkNew<IceViewer> viewer;
     viewer->Setup(target, renderer);
+    if (mirror.Mapper)
+    {
+      viewer->Follow(mirror, image);
+    }
     interactor->SetInteractorStyle(viewer);
     interactor->SetRenderWindow(window);
     window->Render();

@@ -32,6 +32,7 @@
 #include "vtkPolyDataReader.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkReverseSense.h"
 #include "vtkSTLReader.h"
 #include "vtkSkybox.h"
 #include "vtkSphereSource.h"
@@ -443,5 +444,37 @@ vtkActor* Populate(
     renderer->ResetCameraClippingRange();
   }
   return ice;
+}
+
+vtkActor* AddMirrorImage(vtkRenderer* renderer, vtkPolyData* model)
+{
+  double bounds[6];
+  model->GetBounds(bounds);
+  vtkNew<vtkTransform> reflect;
+  reflect->Translate(0.0, 2.0 * bounds[2], 0.0);
+  reflect->Scale(1.0, -1.0, 1.0);
+  // Reflected in its points, not by the actor's matrix: the ice's passes cull faces by their
+  // turn on the screen, which a reflecting matrix reverses (the image showed its inside). The
+  // cells turned back keep the surface facing out.
+  vtkNew<vtkTransformPolyDataFilter> reflected;
+  reflected->SetInputData(model);
+  reflected->SetTransform(reflect);
+  vtkNew<vtkReverseSense> turned;
+  turned->SetInputConnection(reflected->GetOutputPort());
+  turned->ReverseCellsOn();
+  turned->ReverseNormalsOff();
+  turned->Update();
+  vtkNew<vtkIceMapper> mapper;
+  mapper->SetInputData(turned->GetOutput());
+  vtkNew<vtkActor> image;
+  image->SetMapper(mapper);
+  image->PickableOff();
+  renderer->AddActor(image);
+  return image;
+}
+
+void ShowMirrorImage(vtkActor* image, const std::string& debugView)
+{
+  image->SetVisibility(debugView == "off");
 }
 }

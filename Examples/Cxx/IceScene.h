@@ -11,6 +11,7 @@
 #include <vector>
 
 class vtkActor;
+class vtkIceMapper;
 class vtkPolyData;
 class vtkRenderer;
 class vtkTexture;
@@ -66,6 +67,18 @@ struct Options
 // Returns the ice actor (its mapper is a vtkIceMapper).
 vtkActor* Populate(
   vtkRenderer* renderer, vtkPolyData* model, vtkTexture* environment, const Options& options = {});
+
+// The ice's mirror image in the melt pool around its foot (Options::Ground; IceGround's pool
+// lets what lies below the ground show through by water's share of reflection): the model
+// reflected about its lowest y, as ice of its own (a vtkIceMapper), added to the renderer and
+// returned for the caller to give it the ice's look (ShowMirrorImage). Its cracks and bubbles are
+// the look's own in the reflected shape (placed in it as in any ice), not the mirror images of
+// the ice's.
+vtkActor* AddMirrorImage(vtkRenderer* renderer, vtkPolyData* model);
+
+// Shows the mirror image only while the ice shows its look: a debug view (the paper's Figure 5)
+// is of the ice alone.
+void ShowMirrorImage(vtkActor* image, const std::string& debugView);
 }
 
 #endif

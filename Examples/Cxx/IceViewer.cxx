@@ -3,6 +3,7 @@
 #include "IceViewer.h"
 
 #include "IceOutputFile.h"
+#include "IceScene.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkIceMapper.h"
@@ -194,10 +195,20 @@ void IceViewer::UpdateLegend()
 }
 
 //------------------------------------------------------------------------------
+void IceViewer::Set(const std::string& name, const std::string& value)
+{
+  vtkIceLookTable::Apply(this->Target, name, value);
+  if (this->Mirror.Mapper)
+  {
+    vtkIceLookTable::Apply(this->Mirror, name, value);
+    IceScene::ShowMirrorImage(this->MirrorImage, vtkIceLookTable::Value(this->Target, "debug-view"));
+  }
+}
+
+//------------------------------------------------------------------------------
 void IceViewer::Toggle(const std::string& name)
 {
-  vtkIceLookTable::Apply(
-    this->Target, name, vtkIceLookTable::Value(this->Target, name) == "on" ? "off" : "on");
+  this->Set(name, vtkIceLookTable::Value(this->Target, name) == "on" ? "off" : "on");
 }
 
 //------------------------------------------------------------------------------
@@ -207,11 +218,11 @@ void IceViewer::OffOrBack(const std::string& name, std::string& remembered)
   if (std::stod(value) != 0.0)
   {
     remembered = value;
-    vtkIceLookTable::Apply(this->Target, name, "0");
+    this->Set(name, "0");
   }
   else
   {
-    vtkIceLookTable::Apply(this->Target, name, remembered);
+    this->Set(name, remembered);
   }
 }
 
@@ -224,7 +235,7 @@ void IceViewer::Cycle(const std::string& name)
   {
     if (names[i] == current)
     {
-      vtkIceLookTable::Apply(this->Target, name, names[(i + 1) % names.size()]);
+      this->Set(name, names[(i + 1) % names.size()]);
       return;
     }
   }
@@ -242,7 +253,7 @@ void IceViewer::Step(const std::string& name, double delta)
   std::ostringstream text;
   text.precision(10);
   text << std::min(std::max(value, low), high);
-  vtkIceLookTable::Apply(this->Target, name, text.str());
+  this->Set(name, text.str());
 }
 
 //------------------------------------------------------------------------------

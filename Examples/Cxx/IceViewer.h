@@ -13,6 +13,7 @@
 
 #include <string>
 
+class vtkActor;
 class vtkTextActor;
 
 class IceViewer : public vtkInteractorStyleTrackballCamera
@@ -23,6 +24,13 @@ public:
 
   // What the keys change, and the renderer that shows the legend.
   void Setup(const vtkIceLookTable::Target& target, vtkRenderer* renderer);
+  // Another ice that takes every change the keys make: the ice's mirror image in its pool
+  // (IceScene::AddMirrorImage), shown while the ice shows its look.
+  void Follow(const vtkIceLookTable::Target& mirror, vtkActor* image)
+  {
+    this->Mirror = mirror;
+    this->MirrorImage = image;
+  }
 
   // Where the save key writes ice-view-N.png and ice-view-N.ice (default: the current folder).
   void SetOutputDirectory(const std::string& directory) { this->OutputDirectory = directory; }
@@ -70,7 +78,12 @@ protected:
   void Cycle(const std::string& name);
   void ShowFrameTime();
 
+  // Sets `name` on the ice and on the one that follows it.
+  void Set(const std::string& name, const std::string& value);
+
   vtkIceLookTable::Target Target;
+  vtkIceLookTable::Target Mirror;
+  vtkActor* MirrorImage = nullptr;
   vtkRenderer* Renderer = nullptr;
   vtkNew<vtkTextActor> Legend;
   vtkNew<vtkTextActor> FrameTime;

@@ -31,9 +31,11 @@ def render(name, *args):
 
 
 def ice_pixels(model, look):
-    """The pixels where the ice is: those the front-depth debug view changes."""
-    debug = render(model + "-debug", "--model", model, "--debug-view", "front-depth")
-    return [i for i, (p, q) in enumerate(zip(look, debug)) if p != q]
+    """The pixels where the ice is: where its front faces' depth differs from its back faces' in
+    the debug views (the look itself would count the ice's mirror image in its melt pool too)."""
+    front = render(model + "-front", "--model", model, "--debug-view", "front-depth")
+    back = render(model + "-back", "--model", model, "--debug-view", "back-depth")
+    return [i for i, (p, q) in enumerate(zip(front, back)) if p != q], front
 
 
 def mean(values):
@@ -83,7 +85,7 @@ def main():
                 warm = mean(p[0] - p[2] for p in ground)
                 check("the ground takes the panorama's own ground colour", warm >= 8,
                       "the bottom tenth's red exceeds its blue by %.1f/255" % warm)
-        ice = ice_pixels(model, look)
+        ice, debug = ice_pixels(model, look)
         clipped = sum(1 for i in ice if min(look[i]) >= 254)
         check("%s: at most 1 %% of the ice's pixels clipped to white" % model,
               len(ice) > 5000 and clipped <= 0.01 * len(ice),
@@ -112,6 +114,17 @@ def main():
             check("the block's centre is milkier than its rim", centre >= 20 and centre >= 3 * rim,
                   "the core whitens the centre by %.1f/255, the rim by %.1f/255" % (centre, rim))
             check_crack_sheets(render("block-with-cracks", "--model", model, *CRACKS), width)
+            if os.path.exists(FOREST):
+                # The ice stands in its melt pool, which mirrors it: beside and below the ice's
+                # lower half on the screen, the debug view (which shows the ice alone, without
+                # its mirror image) changes the pool. Without the image it changed no pixel there.
+                inside = set(ice)
+                middle = (y0 + y1) // 2  # rows count from the bottom
+                pool = sum(1 for i in range(middle * width) if i not in inside and
+                           max(abs(a - b) for a, b in zip(look[i], debug[i])) > 6)
+                check("the melt pool mirrors the ice", pool >= 0.05 * len(ice),
+                      "%d pixels beside and below the ice's lower half (%.1f %% of the ice's)"
+                      % (pool, 100.0 * pool / len(ice)))
     check("thick ice (the block) bluer than thin ice (the teapot's walls)",
           blue_shift["block"] >= 15 and blue_shift["block"] >= 1.5 * blue_shift["teapot"],
           "blue over red from absorption: block %.1f/255, teapot %.1f/255"
