@@ -45,7 +45,7 @@ constexpr double CoreDrop = 0.12;
 // front of it.
 constexpr double BubbleCells = 56.0;
 constexpr double BubbleCoreRadius = 0.6;
-constexpr double BubbleStreams = 0.015;
+constexpr double BubbleStreams = 0.03;
 // The largest share of the cells that hold a bubble of the cloud, even where it is densest.
 constexpr double BubbleFull = 0.6;
 constexpr double BubbleDepthFade = 2.0;

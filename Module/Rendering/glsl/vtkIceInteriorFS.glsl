@@ -100,16 +100,16 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
     if (!stream)
     {
       // Feathers: the cloud's density varies with the direction from its centre, so it runs in
-      // streaks towards the centre, as the freezing fronts left it; and in clumps a few cells
-      // across. Never every cell, even in the middle: a bubble in each showed the grid's rows
-      // wherever a rounded edge magnified them.
-      // (Both only where they could matter: at most 1.6 and 1.5 times.)
+      // streaks towards the centre, as the freezing fronts left it; and in clumps some eight
+      // cells across, clear between them. Never every cell, even in the middle: a bubble in each
+      // showed the grid's rows wherever a rounded edge magnified them. (Both only where they
+      // could matter: at most 1.6 and 1.5 times.)
       if (more.x < min(2.4 * chance, ICE_BUBBLE_FULL))
       {
         float n = textureLod(iceInteriorBump, normalize(u + 1.0e-6) * 0.6, 0.0).x;
-        float clump = iceLatticeNoise(0.23 * place + vec3(3.1, 7.7, 1.3));
+        float clump = iceLatticeNoise(0.12 * place + vec3(3.1, 7.7, 1.3));
         chance = min(chance * mix(0.3, 1.6, smoothstep(-0.25, 0.25, n)) *
-            mix(0.2, 1.5, smoothstep(0.3, 0.7, clump)), ICE_BUBBLE_FULL);
+            mix(0.05, 1.5, smoothstep(0.3, 0.7, clump)), ICE_BUBBLE_FULL);
       }
       else
       {
