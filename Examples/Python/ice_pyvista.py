@@ -84,7 +84,8 @@ def main(out="ice_pyvista.png"):
     # mirrors the others inside, a barely frosted surface, a cloudy core of small bubbles); the
     # look's parameters by name change it. dynamic_environment: the cone and the ground show in
     # the ice, not only the panorama. The cubes are ice-render's: flat faces, melted round edges;
-    # the smaller one turned, with a smaller, fainter core.
+    # the smaller one turned, with a smaller, fainter core. Both stand in their melt water
+    # (WetBase): their bases show the ground instead of mirroring their insides.
     source = vtkice.vtkIceBlockSource()
     source.SetResolution(48)
     source.SetRoundness(0.22)
@@ -92,11 +93,11 @@ def main(out="ice_pyvista.png"):
     source.SetSeed(3)
     source.Update()
     cube = pv.wrap(source.GetOutput()).scale(0.5).translate((-0.45, -0.5, 0.3))
-    vtkice.pyvista.add_ice(plotter, cube, dynamic_environment=True)
+    vtkice.pyvista.add_ice(plotter, cube, dynamic_environment=True, WetBase=True)
     source.SetSeed(5)
     source.Update()
     small = pv.wrap(source.GetOutput()).scale(0.35).rotate_y(35.0).translate((0.85, -0.65, -0.2))
-    vtkice.pyvista.add_ice(plotter, small, MilkyCoreRadius=0.35, Milkiness=0.3)
+    vtkice.pyvista.add_ice(plotter, small, MilkyCoreRadius=0.35, Milkiness=0.3, WetBase=True)
     if photographed:
         # The panorama is brighter than white: the filmic curve maps it to the screen.
         vtkice.pyvista.tone_mapping(plotter, "filmic")
