@@ -165,7 +165,7 @@ int main(int argc, char* argv[])
     viewer->Setup(target, renderer);
     if (mirror.Mapper)
     {
-      viewer->Follow(mirror, image);
+      viewer->Follow(image);
     }
     interactor->SetInteractorStyle(viewer);
     interactor->SetRenderWindow(window);

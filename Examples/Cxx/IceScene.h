@@ -11,7 +11,6 @@
 #include <vector>
 
 class vtkActor;
-class vtkIceMapper;
 class vtkPolyData;
 class vtkRenderer;
 class vtkTexture;

@@ -5,6 +5,7 @@
 #include "IceOutputFile.h"
 #include "IceScene.h"
 
+#include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkIceMapper.h"
 #include "vtkObjectFactory.h"
@@ -192,6 +193,14 @@ void IceViewer::UpdateLegend()
   text << "mouse: trackball camera, e: quit";
   this->LegendText = text.str();
   this->FitLegend();
+}
+
+//------------------------------------------------------------------------------
+void IceViewer::Follow(vtkActor* image)
+{
+  this->Mirror = this->Target;
+  this->Mirror.Mapper = vtkIceMapper::SafeDownCast(image->GetMapper());
+  this->MirrorImage = image;
 }
 
 //------------------------------------------------------------------------------

@@ -24,13 +24,10 @@ public:
 
   // What the keys change, and the renderer that shows the legend.
   void Setup(const vtkIceLookTable::Target& target, vtkRenderer* renderer);
-  // Another ice that takes every change the keys make: the ice's mirror image in its pool
-  // (IceScene::AddMirrorImage), shown while the ice shows its look.
-  void Follow(const vtkIceLookTable::Target& mirror, vtkActor* image)
-  {
-    this->Mirror = mirror;
-    this->MirrorImage = image;
-  }
+  // Another ice (its actor's mapper a vtkIceMapper) that takes every change the keys make: the
+  // ice's mirror image in its pool (IceScene::AddMirrorImage), shown while the ice shows its
+  // look. After Setup.
+  void Follow(vtkActor* image);
 
   // Where the save key writes ice-view-N.png and ice-view-N.ice (default: the current folder).
   void SetOutputDirectory(const std::string& directory) { this->OutputDirectory = directory; }

@@ -9,6 +9,7 @@
 #include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "IceViewer.h"
+#include "IceViewerTestScene.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -46,19 +47,12 @@ bool Exists(const std::string& path)
 
 int TestIceViewer(int, char*[])
 {
-  std::string error;
-  vtkSmartPointer<vtkPolyData> model = IceScene::LoadModel("sphere", error);
-  vtkSmartPointer<vtkTexture> environment = IceScene::LoadEnvironment("sky", error);
-  vtkNew<vtkRenderer> renderer;
-  IceScene::Options options;
-  options.Landscape = false;
-  options.DynamicEnvironment = false;
-  vtkActor* ice = IceScene::Populate(renderer, model, environment, options);
-  vtkIcePass* pass = vtkIcePass::SafeDownCast(renderer->GetPass());
-  vtkNew<vtkIceCubeMapPass> cubeMaps;
-  cubeMaps->SetFaceSize(64);
-  vtkIceMapper* mapper = vtkIceMapper::SafeDownCast(ice->GetMapper());
-  const vtkIceLookTable::Target target{ mapper, pass, cubeMaps, renderer->GetActiveCamera() };
+  IceViewerTestScene scene("sphere");
+  vtkRenderer* renderer = scene.Renderer;
+  vtkIcePass* pass = scene.Target.Pass;
+  vtkIceCubeMapPass* cubeMaps = scene.CubeMaps;
+  vtkIceMapper* mapper = scene.Target.Mapper;
+  const vtkIceLookTable::Target& target = scene.Target;
 
   vtkNew<vtkRenderWindow> window;
   window->SetSize(240, 180);
@@ -132,7 +126,7 @@ int TestIceViewer(int, char*[])
       "snow less / more ': 0.1" },
     { ']', "ior up", [&] { return mapper->GetIceProperty()->GetIndexOfRefraction() > 1.32; },
       "ior down / up ]: 1.33" },
-    { 'd', "dynamic cube map", [&] { return pass->GetCubeMapPass() == cubeMaps.Get(); },
+    { 'd', "dynamic cube map", [&] { return pass->GetCubeMapPass() == cubeMaps; },
       "cube map on/off: on" },
     { 'v', "debug view", [&] { return mapper->GetDebugView() == vtkIceMapper::DebugFrontDepth; },
       "debug view: front-depth" },

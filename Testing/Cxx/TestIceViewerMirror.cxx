@@ -3,41 +3,24 @@
 // ice-render's ice mirrored in its melt pool (IceScene::AddMirrorImage) under the interactive
 // viewer: the image lies below the ice's foot, every key's change reaches it as it reaches the
 // ice, and a debug view (of the ice alone) hides it until the keys leave the debug views.
-#include "vtkIceLookTable.h"
-#include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "IceViewer.h"
+#include "IceViewerTestScene.h"
 
-#include "vtkActor.h"
 #include "vtkCommand.h"
 #include "vtkGenericRenderWindowInteractor.h"
-#include "vtkIceCubeMapPass.h"
-#include "vtkIceMapper.h"
-#include "vtkIcePass.h"
-#include "vtkNew.h"
-#include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkTexture.h"
 
 #include <string>
 
 int TestIceViewerMirror(int, char*[])
 {
   using IceTest::Expect;
-  std::string error;
-  vtkSmartPointer<vtkPolyData> model = IceScene::LoadModel("cube", error);
-  vtkSmartPointer<vtkTexture> environment = IceScene::LoadEnvironment("sky", error);
-  vtkNew<vtkRenderer> renderer;
-  IceScene::Options options;
-  options.Landscape = false;
-  options.DynamicEnvironment = false;
-  vtkActor* ice = IceScene::Populate(renderer, model, environment, options);
+  IceViewerTestScene scene("cube");
+  vtkRenderer* renderer = scene.Renderer;
+  vtkPolyData* model = scene.Model;
+  const vtkIceLookTable::Target& target = scene.Target;
   vtkActor* image = IceScene::AddMirrorImage(renderer, model);
-  vtkIcePass* pass = vtkIcePass::SafeDownCast(renderer->GetPass());
-  vtkNew<vtkIceCubeMapPass> cubeMaps;
-  const vtkIceLookTable::Target target{ vtkIceMapper::SafeDownCast(ice->GetMapper()), pass,
-    cubeMaps, renderer->GetActiveCamera() };
   vtkIceLookTable::Target mirror = target;
   mirror.Mapper = vtkIceMapper::SafeDownCast(image->GetMapper());
 
@@ -58,7 +41,7 @@ int TestIceViewerMirror(int, char*[])
   vtkNew<vtkGenericRenderWindowInteractor> interactor;
   vtkNew<IceViewer> viewer;
   viewer->Setup(target, renderer);
-  viewer->Follow(mirror, image);
+  viewer->Follow(image);
   interactor->SetInteractorStyle(viewer);
   interactor->SetRenderWindow(window);
   window->Render();
