@@ -340,12 +340,17 @@ void vtkIceCubeMapPass::vtkInternals::RenderFace(vtkIceCubeMapPass* pass,
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkOpenGLState::ScopedglScissor scissorSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
   state->PushFramebufferBindings();
   this->FrameBuffer->Bind();
   this->FrameBuffer->AddColorAttachment(0, map.Texture, 0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
   this->FrameBuffer->AddDepthAttachment();
   this->FrameBuffer->ActivateBuffer(0);
-  this->FrameBuffer->Start(pass->FaceSize, pass->FaceSize);
+  // Not Start(): it switches blending off, and translucent props are blended in the faces as in
+  // the frame (which went on without blending after the faces). The camera pass sets the
+  // viewport and scissor box from the framebuffer's size.
+  this->FrameBuffer->StartNonOrtho(pass->FaceSize, pass->FaceSize);
 
   vtkRenderState faceState(renderer);
   faceState.SetPropArrayAndCount(visible.data(), static_cast<int>(visible.size()));
