@@ -53,6 +53,54 @@ def stone(colour, texels=512, seed=7):
     return pv.Texture((numpy.clip(image, 0.0, 1.0) * 255.0).astype(numpy.uint8))
 
 
+def blur(image, sigma):
+    """`image` blurred by a Gaussian of `sigma` texels (separable, the border repeating)."""
+    radius = max(1, int(3.0 * sigma))
+    x = numpy.arange(-radius, radius + 1)
+    kernel = numpy.exp(-0.5 * (x / sigma) ** 2)
+    kernel /= kernel.sum()
+    for axis in (0, 1):
+        padded = numpy.pad(image, [(radius, radius) if a == axis else (0, 0) for a in (0, 1)],
+                           mode="edge")
+        image = numpy.apply_along_axis(lambda row: numpy.convolve(row, kernel, "valid"), axis,
+                                       padded)
+    return image
+
+
+def contact_shadow(mesh, floor_y, texels=256):
+    """A square of ground around `mesh`'s foot, darkened where the mesh comes near the ground: a
+    tight shadow along the line where it touches and a wide faint one (the sky it hides), lighter
+    under the foot, where clear ice lets the light through. Black with the shadow as alpha, laid
+    just above the ground: a translucent decal."""
+    xmin, xmax, _, ymax, zmin, zmax = mesh.bounds
+    extent = max(xmax - xmin, ymax - floor_y, zmax - zmin)
+    centre = ((xmin + xmax) / 2, (zmin + zmax) / 2)
+    half = 0.5 * (max(xmax - xmin, zmax - zmin) + 1.6 * extent)
+    texel = 2.0 * half / texels
+    # The footprint: per texel, how near the surface above it comes to the ground (its points,
+    # dense on these meshes, splatted; the blurs close the gaps between them).
+    points = mesh.points
+    i = ((points[:, 0] - centre[0] + half) / texel).astype(int)
+    j = ((points[:, 2] - centre[1] + half) / texel).astype(int)
+    near = numpy.exp(-numpy.maximum(points[:, 1] - floor_y, 0.0) / (0.12 * extent))
+    cover = numpy.zeros((texels, texels))
+    inside = (i >= 0) & (i < texels) & (j >= 0) & (j < texels)
+    numpy.maximum.at(cover, (j[inside], i[inside]), near[inside])
+    cover = blur(cover, 0.03 * extent / texel) * 2.0
+    tight = numpy.clip(blur(cover, 0.02 * extent / texel), 0.0, 1.0)
+    wide = numpy.clip(blur(cover, 0.25 * extent / texel), 0.0, 1.0)
+    t = numpy.clip((tight - 0.93) / 0.06, 0.0, 1.0)
+    under = t * t * (3.0 - 2.0 * t)
+    outline = numpy.minimum(1.0, 4.0 * tight * (1.0 - tight))
+    shadow = (0.55 * numpy.maximum(outline, tight) + 0.45 * wide) * (1.0 - 0.6 * under)
+    rgba = numpy.zeros((texels, texels, 4), numpy.uint8)
+    rgba[..., 3] = (numpy.clip(0.45 * shadow, 0.0, 1.0) * 255.0).astype(numpy.uint8)
+    # Rows of a texture run with the plane's second axis (j_size), here z.
+    decal = pv.Plane(center=(centre[0], floor_y + 0.002, centre[1]), direction=(0, 1, 0),
+                     i_size=2 * half, j_size=2 * half)
+    return decal, pv.Texture(rgba)
+
+
 def main(out="ice_pyvista.png"):
     plotter = pv.Plotter(off_screen=True, window_size=(800, 600))
 
@@ -98,6 +146,10 @@ def main(out="ice_pyvista.png"):
     source.Update()
     small = pv.wrap(source.GetOutput()).scale(0.35).rotate_y(35.0).translate((0.85, -0.65, -0.2))
     vtkice.pyvista.add_ice(plotter, small, MilkyCoreRadius=0.35, Milkiness=0.3, WetBase=True)
+    # Each cube's contact shadow, so that they stand on the ground.
+    decals = [contact_shadow(mesh, -1.0) for mesh in (cube, small)]
+    for decal, shade in decals:
+        plotter.add_mesh(decal, texture=shade, lighting=False)
     if photographed:
         # The panorama is brighter than white: the filmic curve maps it to the screen.
         vtkice.pyvista.tone_mapping(plotter, "filmic")
