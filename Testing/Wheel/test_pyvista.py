@@ -256,6 +256,29 @@ def test_tone_mapping_compresses_the_light_and_keeps_the_ice():
     plotter.close()
 
 
+def test_tone_mapping_with_a_dynamic_cube_map_keeps_translucent_props():
+    """A black square at opacity 0.12 over a white plane, ice elsewhere with a dynamic cube map,
+    tone mapped: the square is as light in the first screenshot as without the cube map (it
+    rendered black: the cube map's faces left blending off)."""
+    def square(dynamic):
+        plotter = pv.Plotter(off_screen=True, window_size=(200, 200))
+        white = pv.Plane(i_size=4, j_size=4)
+        black = pv.Plane(center=(0, 0, 0.1), i_size=1, j_size=1)
+        plotter.add_mesh(white, color="white", lighting=False)
+        plotter.add_mesh(black, color="black", opacity=0.12, lighting=False)
+        vtkice.pyvista.add_ice(plotter, pv.Sphere(center=(1.5, 1.5, 0.5), radius=0.3),
+                               dynamic_environment=dynamic)
+        vtkice.pyvista.tone_mapping(plotter, "filmic")
+        plotter.camera_position = [(0, 0, 6), (0, 0, 0), (0, 1, 0)]
+        middle = int(plotter.screenshot(return_img=True)[100, 100, 0])
+        plotter.close()
+        return middle
+
+    without = square(False)
+    assert without > 150
+    assert abs(square(True) - without) <= 2
+
+
 def test_tone_mapping_refuses_an_unknown_curve():
     plotter = plotter_with_scene(environment())
     with pytest.raises(ValueError, match="one of none, reinhard, exponential, filmic, aces"):

@@ -85,7 +85,7 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
     // Streams: small bubbles on the column's axis, drawn out upwards; elsewhere mostly tiny, a
     // few large, some drawn out too (the water froze upwards around them).
     bool stream = column.x < ICE_BUBBLE_STREAMS;
-    float radius = stream ? mix(0.06, 0.14, more.y) : mix(0.04, 0.3, pow(more.y, 2.5));
+    float radius = stream ? mix(0.06, 0.14, more.y) : mix(0.04, 0.3, pow(more.y, 2.0));
     float stretch = min(stream ? 2.0 : 1.0 + 1.5 * max(more.z - 0.6, 0.0) / 0.4, 0.45 / radius);
     // Anywhere in the cell that keeps the bubble inside it: no grid shows.
     vec3 extent = vec3(radius, radius * stretch, radius);

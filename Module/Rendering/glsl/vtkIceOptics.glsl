@@ -204,14 +204,24 @@ float iceLatticeNoise(vec3 x)
 // glowing evenly; 1 for rays through the centre.
 float iceCoreStreaks(vec3 p, vec3 q)
 {
-  vec3 nearest = p - dot(p, q) / max(dot(q, q), 1.0e-12) * q;
+  float qq = max(dot(q, q), 1.0e-12);
+  vec3 nearest = p - dot(p, q) / qq * q;
   float r = length(nearest);
   vec3 towards = nearest / max(r, 1.0e-6);
-  float clumps = iceLatticeNoise(2.8 * nearest + vec3(1.7, 0.0, 3.1)) +
-    0.5 * iceLatticeNoise(6.1 * nearest + vec3(0.4, 5.3, 2.2));
+  // The clumps' lattice turned off the ice's axes (its cells lined up into a grid of blobs seen
+  // through a face), and sampled before and behind the nearest point: the cloud has depth.
+  const mat3 turn = mat3(0.0, 0.8, 0.6, -0.8, 0.36, -0.48, -0.6, -0.48, 0.64);
+  vec3 along = 0.35 * inversesqrt(qq) * q;
+  float clumps = 0.0;
+  for (int k = -1; k <= 1; k += 2)
+  {
+    vec3 at = turn * (nearest + float(k) * along);
+    clumps += 0.5 * (iceLatticeNoise(1.9 * at + vec3(1.7, 0.0, 3.1)) +
+                      0.5 * iceLatticeNoise(4.3 * at + vec3(0.4, 5.3, 2.2)));
+  }
   float streaks = iceLatticeNoise((21.0 + 6.4 * r) * towards);
   float structure =
-    mix(0.5, 1.35, smoothstep(-0.3, 0.3, (clumps - 0.75) + 0.2 * (streaks - 0.5)));
+    mix(0.45, 1.4, smoothstep(-0.2, 0.2, (clumps - 0.75) + 0.2 * (streaks - 0.5)));
   return mix(1.0, structure, smoothstep(0.05, 0.5, r));
 }
 

@@ -200,14 +200,24 @@ inline double SmoothStep(double edge0, double edge1, double x)
 // the point where the ray passes nearest the centre.
 inline double CoreStreaks(const Vec3& p, const Vec3& q)
 {
-  const Vec3 nearest = p - glm::dot(p, q) / std::max(glm::dot(q, q), 1.0e-12) * q;
+  const double qq = std::max(glm::dot(q, q), 1.0e-12);
+  const Vec3 nearest = p - glm::dot(p, q) / qq * q;
   const double r = glm::length(nearest);
   const Vec3 towards = nearest / std::max(r, 1.0e-6);
-  const double clumps = LatticeNoise(2.8 * nearest + Vec3(1.7, 0.0, 3.1)) +
-    0.5 * LatticeNoise(6.1 * nearest + Vec3(0.4, 5.3, 2.2));
+  // Column-major, as GLSL's mat3.
+  const glm::dmat3 turn(0.0, 0.8, 0.6, -0.8, 0.36, -0.48, -0.6, -0.48, 0.64);
+  const Vec3 along = 0.35 / std::sqrt(qq) * q;
+  double clumps = 0.0;
+  for (int k = -1; k <= 1; k += 2)
+  {
+    const Vec3 at = turn * (nearest + double(k) * along);
+    clumps += 0.5 *
+      (LatticeNoise(1.9 * at + Vec3(1.7, 0.0, 3.1)) +
+        0.5 * LatticeNoise(4.3 * at + Vec3(0.4, 5.3, 2.2)));
+  }
   const double streaks = LatticeNoise((21.0 + 6.4 * r) * towards);
   const double structure =
-    0.5 + 0.85 * SmoothStep(-0.3, 0.3, (clumps - 0.75) + 0.2 * (streaks - 0.5));
+    0.45 + 0.95 * SmoothStep(-0.2, 0.2, (clumps - 0.75) + 0.2 * (streaks - 0.5));
   return 1.0 + (structure - 1.0) * SmoothStep(0.05, 0.5, r);
 }
 
