@@ -49,6 +49,11 @@ constexpr double BubbleStreams = 0.03;
 // The largest share of the cells that hold a bubble of the cloud, even where it is densest.
 constexpr double BubbleFull = 0.6;
 constexpr double BubbleDepthFade = 2.0;
+// A few larger bubbles, one at most in each cell of a grid BubbleLargeCells times coarser, in this
+// share of its cells at the cloud's densest: the fine grid's bubbles must fit its cells, so a
+// single grid showed bubbles of nearly one size.
+constexpr double BubbleLargeCells = 7.0;
+constexpr double BubbleLargeShare = 0.35;
 
 // The density of the core's air (iceCoreDensity) that gives a ray through its centre the optical
 // depth CoreOpticalDepth * milkiness: the density's integral along that ray is sqrt(pi).
@@ -108,6 +113,8 @@ inline std::string Defines()
           << "#define ICE_CORE_RIM_AIR " << CoreRimAir << "\n"
           << "#define ICE_BUBBLE_STREAMS " << BubbleStreams << "\n"
           << "#define ICE_BUBBLE_FULL " << BubbleFull << "\n"
+          << "#define ICE_BUBBLE_LARGE_CELLS " << BubbleLargeCells << "\n"
+          << "#define ICE_BUBBLE_LARGE_SHARE " << BubbleLargeShare << "\n"
           << "#define ICE_CRACK_MIRROR_BUMPS " << CrackMirrorBumps << "\n"
           << "#define ICE_CRACK_EDGE_WIDTH " << CrackEdgeWidth << "\n"
           << "#define ICE_CRACK_EDGE " << CrackEdge << "\n"

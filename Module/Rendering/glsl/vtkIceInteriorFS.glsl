@@ -61,17 +61,14 @@ float iceBubbleProfile(vec3 u)
 // the ice and the core's cloud in front of it fade it. Rays through a column that holds a stream
 // meet bubbles lined up vertically. Also traced (vtkIceTraceFS.glsl) on the segments after a
 // reflection inside, with the pixel's footprint carried along the path.
-vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection,
-  float viewDepth, float along)
+// One grid of cells `cell` wide; `large`: the coarse grid of a few larger bubbles.
+vec4 iceBubbleGrid(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection,
+  float viewDepth, float along, float cell, bool large)
 {
   vec4 layer = vec4(0.0, 0.0, 0.0, 1.0);
-  if (iceBubbleDensity <= 0.0 || iceInteriorDebug != 0)
-  {
-    return layer;
-  }
   float modelPerWorld = length(d);
-  vec3 p = o / iceBubbleCell; // in cells
-  vec3 v = d / iceBubbleCell;
+  vec3 p = o / cell; // in cells
+  vec3 v = d / cell;
   IceGridWalk walk = iceGridWalk(p, v, floor(p));
   float sCell = 0.0;
   int i = 0;
@@ -84,8 +81,10 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
     vec3 more = iceCellRandom(c + ivec3(40503, 0, 0));
     // Streams: small bubbles on the column's axis, drawn out upwards; elsewhere mostly tiny, a
     // few large, some drawn out too (the water froze upwards around them).
-    bool stream = column.x < ICE_BUBBLE_STREAMS;
-    float radius = stream ? mix(0.06, 0.14, more.y) : mix(0.04, 0.3, pow(more.y, 2.0));
+    bool stream = !large && column.x < ICE_BUBBLE_STREAMS;
+    // The larger ones 1.5 to 3 times the fine grid's largest radius.
+    float radius = large ? mix(0.065, 0.13, more.y)
+                         : (stream ? mix(0.06, 0.14, more.y) : mix(0.04, 0.3, pow(more.y, 2.0)));
     float stretch = min(stream ? 2.0 : 1.0 + 1.5 * max(more.z - 0.6, 0.0) / 0.4, 0.45 / radius);
     // Anywhere in the cell that keeps the bubble inside it: no grid shows.
     vec3 extent = vec3(radius, radius * stretch, radius);
@@ -94,10 +93,14 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
     {
       place.xz = vec2(c.xz) + 0.45 + 0.1 * column.yz;
     }
-    vec3 u = (place * iceBubbleCell - iceCoreCenter) * iceCoreScale;
+    vec3 u = (place * cell - iceCoreCenter) * iceCoreScale;
     float profile = iceBubbleProfile(u);
     float chance = iceBubbleDensity * (stream ? min(0.7, 2.0 * sqrt(profile)) : profile);
-    if (!stream)
+    if (large)
+    {
+      chance *= ICE_BUBBLE_LARGE_SHARE;
+    }
+    else if (!stream)
     {
       // Feathers: the cloud's density varies with the direction from its centre, so it runs in
       // streaks towards the centre, as the freezing fronts left it; and in clumps some eight
@@ -125,12 +128,14 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
       float sClosest = dot(w, vb) / dot(vb, vb);
       float miss = length(w - sClosest * vb);
       float pixel = 0.5 * max(icePixelFootprint.x + icePixelFootprint.y *
-          (viewDepth + sClosest * along), 1.0e-6) * modelPerWorld / iceBubbleCell;
+          (viewDepth + sClosest * along), 1.0e-6) * modelPerWorld / cell;
       float cover = clamp((radius + pixel - miss) / (2.0 * pixel), 0.0, 1.0) *
         min(1.0, radius * radius / (pixel * pixel));
-      // Small bubbles scatter less of the light that reaches them: dimmer specks.
-      float rim = mix(0.3, 0.8, smoothstep(0.3, 1.0, miss / radius)) *
-        mix(0.45, 1.0, smoothstep(0.04, 0.2, radius));
+      // Small bubbles scatter less of the light that reaches them: dimmer specks. A larger one
+      // is a bright ring (the light reflected totally at its rim) around a clearer middle.
+      float rim = large ? mix(0.12, 0.9, smoothstep(0.55, 1.0, miss / radius))
+                        : mix(0.3, 0.8, smoothstep(0.3, 1.0, miss / radius)) *
+          mix(0.45, 1.0, smoothstep(0.04, 0.2, radius));
       float seen = exp(-iceBubbleFade * sClosest * modelPerWorld -
         iceCoreOpticalDepth(coreOrigin, coreDirection, max(sClosest, 0.0), iceCoreDensity));
       float a = sClosest > 0.0 && sClosest < sBack ? cover * rim * seen : 0.0;
@@ -140,6 +145,21 @@ vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection
     sCell = iceGridStep(walk);
   } while (++i < 160 && sCell < sBack && layer.a > 0.02);
   return layer;
+}
+
+vec4 iceBubbles(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirection,
+  float viewDepth, float along)
+{
+  if (iceBubbleDensity <= 0.0 || iceInteriorDebug != 0)
+  {
+    return vec4(0.0, 0.0, 0.0, 1.0);
+  }
+  vec4 fine = iceBubbleGrid(
+    o, d, sBack, coreOrigin, coreDirection, viewDepth, along, iceBubbleCell, false);
+  vec4 large = iceBubbleGrid(o, d, sBack, coreOrigin, coreDirection, viewDepth, along,
+    ICE_BUBBLE_LARGE_CELLS * iceBubbleCell, true);
+  // The two grids' bubbles rarely overlap: the fine ones over the larger.
+  return vec4(fine.rgb + fine.a * large.rgb, fine.a * large.a);
 }
 
 //ICE::Functions
