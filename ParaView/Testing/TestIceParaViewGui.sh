@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
-# The ParaView application with the plugin: a sphere shown as Ice in an Ice View, with its Ice
+# The ParaView application with the plugin: a rounded block shown as Ice in an Ice View, with its Ice
 # property group; a screenshot of the whole screen (the window) goes to $out/paraview-gui.png.
 set -euo pipefail
 paraview=$1 plugin_dir=$2 out=$3
 result="$out/gui-result.txt"
-rm -f "$result" "$out/ice.png" "$out/hidden.png"
-VTKICE_GUI_RESULT="$result" PV_PLUGIN_PATH="$plugin_dir" \
+rm -f "$result" "$out/ice.png" "$out/hidden.png" "$out/forest.png"
+# Debian's blender-data forest panorama as the view's skybox where it is installed (ParaView reads
+# no EXR: ImageMagick writes it as an sRGB PNG); the view's gradient without it.
+forest=/usr/share/blender/datafiles/studiolights/world/forest.exr
+panorama=
+if [ -f "$forest" ] && convert "$forest" -colorspace sRGB "$out/forest.png"; then
+  panorama=$out/forest.png
+fi
+VTKICE_GUI_RESULT="$result" VTKICE_GUI_PANORAMA="$panorama" PV_PLUGIN_PATH="$plugin_dir" \
   "$paraview" -geometry 1280x1400+0+0 --dr --script="$(dirname "$0")/Python/gui_script.py" \
   > "$out/gui.log" 2>&1 &
 pid=$!

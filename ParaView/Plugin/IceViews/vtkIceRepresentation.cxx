@@ -181,6 +181,7 @@ vtkIceLookMacro(FresnelPower, double, v);
 vtkIceLookMacro(FresnelModel, int, v);
 vtkIceLookMacro(BackNormalWeight, double, v);
 vtkIceDrawingMacro(TwoSidedRefraction, int, v != 0);
+vtkIceDrawingMacro(WetBase, int, v != 0);
 // The representation has no TwoSidedMethod: tracing (above 1) goes with the exit point it needs.
 void vtkIceRepresentation::SetMaxBounces(int v)
 {

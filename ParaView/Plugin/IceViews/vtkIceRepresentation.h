@@ -49,8 +49,8 @@ public:
   ///@{
   /**
    * The look's parameters, set on the ice property both mappers share (see vtkIceProperty for
-   * meanings and ranges); TwoSidedRefraction, MaxBounces, CrackClipping and InteriorMethod on both
-   * mappers.
+   * meanings and ranges); TwoSidedRefraction, MaxBounces, WetBase, CrackClipping and
+   * InteriorMethod on both mappers.
    */
   void SetIndexOfRefraction(double value);
   void SetFresnelPower(double value);
@@ -58,6 +58,7 @@ public:
   void SetBackNormalWeight(double value);
   void SetTwoSidedRefraction(int value);
   void SetMaxBounces(int value);
+  void SetWetBase(int value);
   void SetIceColor(double red, double green, double blue);
   void SetAttenuationColor(double red, double green, double blue);
   ///@}

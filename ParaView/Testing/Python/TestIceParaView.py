@@ -262,6 +262,12 @@ display.FresnelModel = 1
 traced = h.capture(view, os.path.join(out, "box-traced.png"))
 changed = (h.difference(traced, exit_point) > 8).sum()
 h.check(changed > 2000, "MaxBounces 8, dielectric Fresnel: %d pixels of the box change" % changed)
+# WetBase reaches the mappers: the box's base, seen from above, shows what is below it instead
+# of mirroring its inside.
+display.WetBase = 1
+wet = h.capture(view, os.path.join(out, "box-wet-base.png"))
+changed = (h.difference(wet, traced) > 8).sum()
+h.check(changed > 500, "WetBase: %d pixels of the box change" % changed)
 Delete(view)
 Delete(box)
 
