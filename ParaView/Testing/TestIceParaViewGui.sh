@@ -14,7 +14,9 @@ panorama=
 if [ -f "$forest" ] && convert "$forest" -colorspace sRGB "$out/forest.png"; then
   panorama=$out/forest.png
 fi
-VTKICE_GUI_RESULT="$result" VTKICE_GUI_PANORAMA="$panorama" PV_PLUGIN_PATH="$plugin_dir" \
+# The script uses the other tests' helpers (ice_paraview_helpers.py beside it).
+PYTHONPATH="$(dirname "$0")/Python${PYTHONPATH:+:$PYTHONPATH}" \
+  VTKICE_GUI_RESULT="$result" VTKICE_GUI_PANORAMA="$panorama" PV_PLUGIN_PATH="$plugin_dir" \
   "$paraview" -geometry 1280x1400+0+0 --dr --script="$(dirname "$0")/Python/gui_script.py" \
   > "$out/gui.log" 2>&1 &
 pid=$!

@@ -8,9 +8,11 @@ file named by VTKICE_GUI_RESULT, and the view with the ice and with the block hi
 and hidden.png beside it, which the test compares (the ice must show)."""
 import os
 
-from paraview.simple import (AssignViewToLayout, Cone, CreateTexture, CreateView, Delete,
-                             GetActiveView, GetLayout, Hide, Plane, Render, SaveScreenshot,
-                             SetActiveSource, SetActiveView, Show, Superquadric)
+from paraview.simple import (AssignViewToLayout, Cone, CreateView, Delete, GetActiveView,
+                             GetLayout, Hide, Plane, Render, SaveScreenshot, SetActiveSource,
+                             SetActiveView, Show, Superquadric)
+
+import ice_paraview_helpers as h
 
 result = os.environ["VTKICE_GUI_RESULT"]
 panorama = os.environ.get("VTKICE_GUI_PANORAMA", "")
@@ -23,12 +25,7 @@ SetActiveView(view)
 view.UseColorPaletteForBackground = 0
 if panorama:
     view.BackgroundColorMode = "Skybox"
-    texture = CreateTexture(panorama)
-    # ParaView 5.13's CreateTexture leaves the texture without its image; given its file name
-    # again, it reads it (5.11 and 6.1 read it at once).
-    texture.FileName = ""
-    texture.FileName = panorama
-    view.BackgroundTexture = texture
+    view.BackgroundTexture = h.create_texture(panorama)
 else:
     view.BackgroundColorMode = "Gradient"
     view.Background = [0.3, 0.3, 0.33]
@@ -71,10 +68,7 @@ def ground_texture(path, half, texels=2048, seed=7):
     writer.SetFileName(path)
     writer.SetInputData(image)
     writer.Write()
-    texture = CreateTexture(path)
-    texture.FileName = ""  # as the panorama's, for ParaView 5.13
-    texture.FileName = path
-    return texture
+    return h.create_texture(path)
 
 
 # A ground of the panorama's own dark earth, and a cone to see in the ice.
