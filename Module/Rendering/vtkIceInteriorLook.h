@@ -31,11 +31,10 @@ constexpr double CrackBumpCells = 24.0;
 constexpr double CoreOpticalDepth = 4.0;
 constexpr double CoreColour[3] = { 0.88, 0.92, 0.95 };
 constexpr double CoreRimAir = 0.3;
-// The core's shape: a flat plume, as water freezing from the faces inwards leaves its air last
-// in a sheet-like column below the middle (an ice cube's cloud is seldom a ball; flat, its images
-// through two faces differ instead of reading as one copied twice). Its radii against
-// MilkyCoreRadius: CoreHeight along the model's y axis, CoreWidth along x, CoreDepth along z; its
-// centre CoreDrop of the half height below the middle.
+// The core's shape: a plume, as water freezing from the faces inwards leaves its air last in a
+// column below the middle (an ice cube's cloud is seldom a ball). Its radii against
+// MilkyCoreRadius: CoreHeight along the model's y axis, CoreWidth across; its centre CoreDrop of
+// the half height below the middle.
 constexpr double CoreHeight = 1.3;
 constexpr double CoreWidth = 0.95;
 constexpr double CoreDepth = 0.5;
@@ -71,8 +70,7 @@ inline void CoreFrame(const double bounds[6], double radius, double centre[3], d
   for (int axis = 0; axis < 3; ++axis)
   {
     const double half = 0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]);
-    const double shape = axis == 0 ? CoreWidth : axis == 1 ? CoreHeight : CoreDepth;
-    const double coreRadius = half * radius * shape;
+    const double coreRadius = half * radius * (axis == 1 ? CoreHeight : axis == 0 ? CoreWidth : CoreDepth);
     centre[axis] =
       0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]) - (axis == 1 ? CoreDrop * half : 0.0);
     scale[axis] = 1.0 / (coreRadius > 1.0e-12 ? coreRadius : 1.0e-12);
