@@ -293,14 +293,14 @@ vtkSmartPointer<vtkActor> MakeGround(
       const double focus = std::clamp((r * halfSize / extent - 1.0) / 2.0, 0.0, 1.0);
       const size_t k = static_cast<size_t>(j) * fine + i;
       const double stoneHere = sharp[k] + focus * (soft[k] - sharp[k]);
-      // Wet ground is darker: the water film lets about a third of the light the stone scatters
-      // out, and mirrors the surroundings instead, less where the ice hides them (there it
-      // mirrors the ice): the sheen must not wash out the contact shadow. At half, the pool read
-      // as no puddle at all; fainter still, as the shadow's edge.
+      // Wet ground is darker: the water film lets half the light the stone scatters out, and
+      // mirrors the surroundings instead, less where the ice hides them (there it mirrors the
+      // ice): the sheen must not wash out the contact shadow. Fainter, the pool read as the
+      // shadow's edge, not as water.
       const double shadowed = shadowAt(i, j, 0);
       const double wet = shadowAt(i, j, 1);
       const double shade =
-        (1.0 - strength * shadowed) * (1.0 - 0.65 * wet) + caustic * shadowAt(i, j, 2);
+        (1.0 - strength * shadowed) * (1.0 - 0.5 * wet) + caustic * shadowAt(i, j, 2);
       const double mirrored = reflectance * wet * (1.0 - shadowed);
       for (int c = 0; c < 3; ++c)
       {

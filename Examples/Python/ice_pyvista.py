@@ -145,7 +145,7 @@ def main(out="ice_pyvista.png"):
     source.SetSeed(5)
     source.Update()
     small = pv.wrap(source.GetOutput()).scale(0.35).rotate_y(35.0).translate((0.85, -0.65, -0.2))
-    vtkice.pyvista.add_ice(plotter, small, MilkyCoreRadius=0.35, Milkiness=0.2, WetBase=True)
+    vtkice.pyvista.add_ice(plotter, small, MilkyCoreRadius=0.35, Milkiness=0.3, WetBase=True)
     # Each cube's contact shadow, so that they stand on the ground.
     decals = [contact_shadow(mesh, -1.0) for mesh in (cube, small)]
     for decal, shade in decals:

@@ -36,8 +36,7 @@ constexpr double CoreRimAir = 0.3;
 // MilkyCoreRadius: CoreHeight along the model's y axis, CoreWidth across; its centre CoreDrop of
 // the half height below the middle.
 constexpr double CoreHeight = 1.3;
-constexpr double CoreWidth = 0.95;
-constexpr double CoreDepth = 0.5;
+constexpr double CoreWidth = 0.8;
 constexpr double CoreDrop = 0.12;
 
 // The bubbles (vtkIceProperty::BubbleDensity): one may sit in each cell of a grid fixed to the ice,
@@ -70,21 +69,10 @@ inline void CoreFrame(const double bounds[6], double radius, double centre[3], d
   for (int axis = 0; axis < 3; ++axis)
   {
     const double half = 0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]);
-    const double coreRadius = half * radius * (axis == 1 ? CoreHeight : axis == 0 ? CoreWidth : CoreDepth);
+    const double coreRadius = half * radius * (axis == 1 ? CoreHeight : CoreWidth);
     centre[axis] =
       0.5 * (bounds[2 * axis] + bounds[2 * axis + 1]) - (axis == 1 ? CoreDrop * half : 0.0);
     scale[axis] = 1.0 / (coreRadius > 1.0e-12 ? coreRadius : 1.0e-12);
-  }
-}
-
-// The scale per axis from model coordinates to the frame of the ice's half sizes, where the
-// core's feathers reach towards its edges (about the core's centre).
-inline void FeatherScale(const double bounds[6], float scale[3])
-{
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    const double half = 0.5 * (bounds[2 * axis + 1] - bounds[2 * axis]);
-    scale[axis] = static_cast<float>(1.0 / (half > 1.0e-12 ? half : 1.0e-12));
   }
 }
 

@@ -425,7 +425,6 @@ void vtkIceInteriorTable::SetBubbleUniforms(vtkShaderProgram* program, vtkIcePro
   // The milky core: its frame in the placement box, its density from the milkiness.
   float coreCenter[3] = { 0.0f, 0.0f, 0.0f };
   float coreScale[3] = { 1.0f, 1.0f, 1.0f };
-  float featherScale[3] = { 1.0f, 1.0f, 1.0f };
   double density = 0.0;
   if (look->HasMilkyCore())
   {
@@ -438,7 +437,6 @@ void vtkIceInteriorTable::SetBubbleUniforms(vtkShaderProgram* program, vtkIcePro
       look->GetMilkyCoreRadius() > 0.0 ? look->GetMilkyCoreRadius()
                                              : vtkIceInteriorLook::BubbleCoreRadius,
       coreCenter, coreScale);
-    vtkIceInteriorLook::FeatherScale(this->Where.Bounds, featherScale);
   }
   program->SetUniformf("iceBubbleDensity", static_cast<float>(look->GetBubbleDensity()));
   program->SetUniformf("iceBubbleCell",
@@ -447,7 +445,6 @@ void vtkIceInteriorTable::SetBubbleUniforms(vtkShaderProgram* program, vtkIcePro
     static_cast<float>(vtkIceInteriorLook::BubbleDepthFade / this->Where.Extent));
   program->SetUniform3f("iceCoreCenter", coreCenter);
   program->SetUniform3f("iceCoreScale", coreScale);
-  program->SetUniform3f("iceFeatherScale", featherScale);
   program->SetUniformf("iceCoreDensity", static_cast<float>(density));
 }
 

@@ -4,8 +4,7 @@
 // IndexOfRefraction 1, no reflection and no absorption passes every view ray straight through,
 // so each interior pixel must be the skybox behind it seen through the core: mixed towards the
 // core's colour by 1 - exp(-depth), depth = vtkIceOpticsReference::CoreOpticalDepth of the ray's
-// chord in the core's frame (the sphere's bounds, scaled by the radius) times its CoreStreaks, and
-// its feathers (CoreFeathers) in front of it. The centre is whiter
+// chord in the core's frame (the sphere's bounds, scaled by the radius) times its CoreStreaks. The centre is whiter
 // than the rim; a core of radius 0 changes no pixel; the paper passes draw none and say so.
 #include "IceTestUtilities.h"
 #include "vtkIceInteriorLook.h"
@@ -37,9 +36,6 @@ Comparison CompareWithReference(IceTest::ClearSphereScene& scene, const IceTest:
   vtkIceInteriorLook::CoreFrame(scene.Bounds, CoreRadius, frameCentre, frameScale);
   const glm::dvec3 centre(frameCentre[0], frameCentre[1], frameCentre[2]);
   const glm::dvec3 scale(frameScale[0], frameScale[1], frameScale[2]);
-  float halfScale[3];
-  vtkIceInteriorLook::FeatherScale(scene.Bounds, halfScale);
-  const glm::dvec3 featherScale(halfScale[0], halfScale[1], halfScale[2]);
   const double density = vtkIceInteriorLook::CoreDensity(Milkiness);
   double whiteness[2] = { 0.0, 0.0 };
   int counted[2] = { 0, 0 };
@@ -47,12 +43,9 @@ Comparison CompareWithReference(IceTest::ClearSphereScene& scene, const IceTest:
   comparison.Stats = scene.CompareAlongChords(
     image, [&](int x, int y, const glm::dvec3& entry, const glm::dvec3& e, double chord) {
       const glm::dvec3 origin = (entry - centre) * scale;
-      // The cloud, and its feathers in front of it (of the same colour: what both leave).
       const double covered = 1.0 -
         std::exp(-vtkIceOpticsReference::CoreOpticalDepth(origin, e * scale, chord, density) *
-          vtkIceOpticsReference::CoreStreaks(origin, e * scale)) *
-          vtkIceOpticsReference::CoreFeathers((entry - centre) * featherScale, e * featherScale,
-            chord, std::min(density, 1.0));
+          vtkIceOpticsReference::CoreStreaks(origin, e * scale));
       // The ray's closest approach to the centre: the inner or the outer third of the disk.
       const double miss = glm::length(glm::cross(entry, e));
       if (miss < 1.0 / 3.0 || miss > 2.0 / 3.0)

@@ -3,8 +3,7 @@
 // The optics' GLSL functions run on the GPU against their CPU mirrors (vtkIceOpticsReference.h)
 // over a sweep of their arguments, each written by a full-screen quad into a float texture and read
 // back: iceCrackReflectance (two indices, both signs of the cosine), iceFresnel, iceTransmittance,
-// iceRefractionSpread, iceMasking, iceRoughInterface, iceCoreStreaks and its iceLatticeNoise,
-// iceCoreFeathers
+// iceRefractionSpread, iceMasking, iceRoughInterface, iceCoreStreaks and its iceLatticeNoise
 // (vtkIceOptics.glsl), iceGgxDistribution
 // (vtkIcePrefilterFS.glsl). Agreement within float rounding: relative 1e-4 (absolute 1e-6 near 0;
 // iceRoughInterface from inside 1e-3, see there).
@@ -151,22 +150,6 @@ int TestIceOpticsFunctions(int, char*[])
           ref::CoreStreaks(ref::Vec3(0.5, 1.6 * x - 0.8, 0.7 * x), ref::Vec3(-0.6, 0.0, 0.8)),
           ref::LatticeNoise(ref::Vec3(9.0 * x - 3.0, 2.5, -1.25)),
           ref::LatticeNoise(ref::Vec3(0.75, 13.0 * x - 6.5, 4.0 * x)) };
-      } },
-    { "iceCoreFeathers",
-      "vec4(iceCoreFeathers(vec3(1.2 * x - 0.6, 0.9, 0.25), vec3(0.05, -1.0, 0.1), 2.0, 1.0), "
-      "iceCoreFeathers(vec3(-0.9, 0.8 * x - 0.4, 0.3 * x), vec3(1.0, 0.1, -0.2), 1.8, 0.7), "
-      "iceCoreFeathers(vec3(0.6, -0.2, 1.1 * x - 0.9), vec3(-0.5, 0.3, 0.9), 0.9, 0.5), "
-      "iceCoreFeathers(vec3(0.7 * x - 0.35, 0.4, -0.9), vec3(0.1, -0.3, 1.0), 1.9, 1.0))",
-      [](double x) {
-        return std::array<double, 4>{
-          ref::CoreFeathers(
-            ref::Vec3(1.2 * x - 0.6, 0.9, 0.25), ref::Vec3(0.05, -1.0, 0.1), 2.0, 1.0),
-          ref::CoreFeathers(
-            ref::Vec3(-0.9, 0.8 * x - 0.4, 0.3 * x), ref::Vec3(1.0, 0.1, -0.2), 1.8, 0.7),
-          ref::CoreFeathers(
-            ref::Vec3(0.6, -0.2, 1.1 * x - 0.9), ref::Vec3(-0.5, 0.3, 0.9), 0.9, 0.5),
-          ref::CoreFeathers(
-            ref::Vec3(0.7 * x - 0.35, 0.4, -0.9), ref::Vec3(0.1, -0.3, 1.0), 1.9, 1.0) };
       } },
     { "iceGgxDistribution",
       "vec4(iceGgxDistribution(x, pow(0.25, 4.0)), iceGgxDistribution(x, pow(0.5, 4.0)), "

@@ -89,7 +89,7 @@ expect_error "SWITCH=VALUE says the switch takes none" "(--static takes no value
 settings=$(awk '/^Look and camera/ {on = 1; next} on && /^  --/' help.txt)
 without=$(printf '%s\n' "$settings" | grep -v ", default" || true)
 if [ "$(printf '%s\n' "$settings" | wc -l)" -ge 30 ] && [ -z "$without" ] &&
-   grep -q '^  --milkiness \[0, 1\], default 0.3$' help.txt &&
+   grep -q '^  --milkiness \[0, 1\], default 0.4$' help.txt &&
    grep -q '^  --fresnel-power \[0, 1000000\], default 3$' help.txt &&
    grep -q 'default ice-cube' help.txt &&
    grep -q '^  --cube-map, --no-cube-map, default on (off with --static)$' help.txt &&

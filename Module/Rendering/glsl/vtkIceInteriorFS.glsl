@@ -19,7 +19,6 @@ uniform float iceMilkiness;          // 0: sparse clear bubbles, 1: white and cl
 uniform int iceInteriorDebug;        // ICE_DEBUG_CRACKS, ICE_DEBUG_AIR or 0
 uniform vec3 iceCoreCenter;          // the milky core, model coordinates
 uniform vec3 iceCoreScale;           // model to the core's frame (its radius 1), per axis
-uniform vec3 iceFeatherScale;        // model to the frame of the ice's half sizes, per axis
 uniform float iceCoreDensity;        // 0: no core
 uniform float iceBubbleDensity;      // 0: no bubbles
 uniform float iceBubbleCell;         // the bubbles' grid cell, model units
@@ -81,28 +80,21 @@ vec4 iceBubbleGrid(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirect
     vec3 r = iceCellRandom(c);
     vec3 more = iceCellRandom(c + ivec3(40503, 0, 0));
     // Streams: small bubbles on the column's axis, drawn out upwards; elsewhere mostly tiny, a
-    // few large, many drawn out towards the core's centre (the freezing fronts pushed the air
-    // inwards along them: the cloud's feathers).
+    // few large, some drawn out too (the water froze upwards around them).
     bool stream = !large && column.x < ICE_BUBBLE_STREAMS;
     // The larger ones 1.5 to 3 times the fine grid's largest radius.
     float radius = large ? mix(0.065, 0.13, more.y)
                          : (stream ? mix(0.06, 0.14, more.y) : mix(0.04, 0.3, pow(more.y, 2.0)));
-    float stretch = min(stream ? 2.0
-        : large              ? 1.0 + 1.5 * max(more.z - 0.6, 0.0) / 0.4
-                             : 1.0 + 3.0 * max(more.z - 0.5, 0.0) / 0.5,
-      0.45 / radius);
-    vec3 axis = stream || large ? vec3(0.0, 1.0, 0.0)
-                                : normalize((vec3(c) + 0.5) * cell - iceCoreCenter + 1.0e-6);
-    // Anywhere in the cell that keeps the bubble inside it, whichever way it is drawn out: no
-    // grid shows.
-    vec3 extent = vec3(radius * stretch);
+    float stretch = min(stream ? 2.0 : 1.0 + 1.5 * max(more.z - 0.6, 0.0) / 0.4, 0.45 / radius);
+    // Anywhere in the cell that keeps the bubble inside it: no grid shows.
+    vec3 extent = vec3(radius, radius * stretch, radius);
     vec3 place = vec3(c) + extent + (1.0 - 2.0 * extent) * r;
     if (stream)
     {
       place.xz = vec2(c.xz) + 0.45 + 0.1 * column.yz;
     }
     vec3 u = (place * cell - iceCoreCenter) * iceCoreScale;
-    float profile = iceBubbleProfile(large ? 0.5 * u : u);
+    float profile = iceBubbleProfile(u);
     float chance = iceBubbleDensity * (stream ? min(0.7, 2.0 * sqrt(profile)) : profile);
     if (large)
     {
@@ -130,10 +122,9 @@ vec4 iceBubbleGrid(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirect
     if (more.x < chance)
     {
       // The ray in the bubble's frame, where it is a ball of radius `radius`.
-      float squash = 1.0 - 1.0 / stretch;
-      vec3 w = place - p;
-      w -= squash * dot(w, axis) * axis;
-      vec3 vb = v - squash * dot(v, axis) * axis;
+      vec3 squash = vec3(1.0, 1.0 / stretch, 1.0);
+      vec3 w = (place - p) * squash;
+      vec3 vb = v * squash;
       float sClosest = dot(w, vb) / dot(vb, vb);
       float miss = length(w - sClosest * vb);
       float pixel = 0.5 * max(icePixelFootprint.x + icePixelFootprint.y *
@@ -142,7 +133,7 @@ vec4 iceBubbleGrid(vec3 o, vec3 d, float sBack, vec3 coreOrigin, vec3 coreDirect
         min(1.0, radius * radius / (pixel * pixel));
       // Small bubbles scatter less of the light that reaches them: dimmer specks. A larger one
       // is a bright ring (the light reflected totally at its rim) around a clearer middle.
-      float rim = large ? mix(0.4, 0.9, smoothstep(0.5, 1.0, miss / radius))
+      float rim = large ? mix(0.12, 0.9, smoothstep(0.55, 1.0, miss / radius))
                         : mix(0.3, 0.8, smoothstep(0.3, 1.0, miss / radius)) *
           mix(0.45, 1.0, smoothstep(0.04, 0.2, radius));
       float seen = exp(-iceBubbleFade * sClosest * modelPerWorld -
@@ -241,11 +232,6 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sCloud, iceCoreDensity) *
       iceCoreStreaks(coreOrigin, coreDirection);
     iceInteriorOver(t, ICE_CORE_COLOUR, iceMilkyCoreCover(depth));
-    // Its feathers in front of it (on this first segment only: the traced ones after a
-    // reflection inside show the cloud alone, so its mirror images are fainter copies).
-    float keep = iceCoreFeathers((o - iceCoreCenter) * iceFeatherScale, dCloud * iceFeatherScale,
-      sCloud, min(iceCoreDensity, 1.0));
-    iceInteriorOver(t, ICE_CORE_COLOUR, 1.0 - keep);
   }
 #endif
   // Every step samples the atlas: texture() then takes its level from the pixel's footprint

@@ -221,49 +221,8 @@ float iceCoreStreaks(vec3 p, vec3 q)
   }
   float streaks = iceLatticeNoise((21.0 + 6.4 * r) * towards);
   float structure =
-    mix(0.45, 1.4, smoothstep(-0.2, 0.2, (clumps - 0.75) + 0.1 * (streaks - 0.5)));
+    mix(0.45, 1.4, smoothstep(-0.2, 0.2, (clumps - 0.75) + 0.2 * (streaks - 0.5)));
   return mix(1.0, structure, smoothstep(0.05, 0.5, r));
-}
-
-// The milky core's feathers: where the freezing fronts from two neighbouring faces met, on the
-// planes through the core's centre towards the ice's edges, they left their air in thin sheets
-// of fine white streaks (an ice cube's cloud reaches towards its corners along them). The ray
-// p + s q, s in [0, sEnd], in the frame of the ice's half sizes about the core's centre: what the
-// sheets it crosses leave of what is behind them (all of one colour, so in any order). Each sheet
-// x = +-y, y = +-z, z = +-x only where the third coordinate is the smallest (the part the two
-// fronts meet on), from a fifth to 0.85 of the half size, streaked along its direction from the
-// centre and broken across it. The three pairs
-// unequal, as the core is flat: the fronts did not advance alike from every face.
-float iceCoreFeathers(vec3 p, vec3 q, float sEnd, float density)
-{
-  const vec3 weight = vec3(1.0, 0.35, 0.7);
-  float speed = max(length(q), 1.0e-12);
-  float keep = 1.0;
-  for (int k = 0; k < 6; ++k)
-  {
-    int i = k / 2;
-    int j = (i + 1) % 3;
-    int m = (i + 2) % 3;
-    vec3 n = vec3(0.0);
-    n[i] = 1.0;
-    n[j] = k % 2 == 0 ? -1.0 : 1.0;
-    float qn = dot(q, n);
-    float s = -dot(p, n) / (abs(qn) > 1.0e-9 ? qn : 1.0e-9);
-    vec3 h = p + s * q;
-    float r = length(h);
-    vec3 towards = h / max(r, 1.0e-6);
-    vec3 salt = float(k) * vec3(3.7, 1.9, 5.3);
-    float streak = smoothstep(0.5, 0.85, iceLatticeNoise(17.0 * towards + salt)) *
-      smoothstep(0.35, 0.75, iceLatticeNoise(6.0 * h - salt));
-    float sheet = weight[i] * smoothstep(0.0, 0.12, abs(h[i]) - abs(h[m])) *
-      (1.0 - smoothstep(0.35, 0.85, r)) * smoothstep(0.05, 0.2, r) * streak;
-    // The cosine between the ray and the sheet's normal (n is sqrt(2) long): seen at a grazing
-    // angle a sheet's streaks crowd into a pixel and would alias into bands, so it fades there.
-    float slant = 0.70710678 * abs(qn) / speed;
-    float a = min(density * sheet * smoothstep(0.1, 0.4, slant), 0.6);
-    keep *= s > 0.0 && s < sEnd ? 1.0 - a : 1.0;
-  }
-  return keep;
 }
 
 // The eye ray's path through the ice, from the front surface at view depth frontDepth to the back

@@ -217,40 +217,8 @@ inline double CoreStreaks(const Vec3& p, const Vec3& q)
   }
   const double streaks = LatticeNoise((21.0 + 6.4 * r) * towards);
   const double structure =
-    0.45 + 0.95 * SmoothStep(-0.2, 0.2, (clumps - 0.75) + 0.1 * (streaks - 0.5));
+    0.45 + 0.95 * SmoothStep(-0.2, 0.2, (clumps - 0.75) + 0.2 * (streaks - 0.5));
   return 1.0 + (structure - 1.0) * SmoothStep(0.05, 0.5, r);
-}
-
-// iceCoreFeathers: what the core's feather sheets crossed by the ray p + s q, s in [0, sEnd]
-// (the frame of the ice's half sizes about the core's centre), leave of what is behind them.
-inline double CoreFeathers(const Vec3& p, const Vec3& q, double sEnd, double density)
-{
-  const double weight[3] = { 1.0, 0.35, 0.7 };
-  const double speed = std::max(glm::length(q), 1.0e-12);
-  double keep = 1.0;
-  for (int k = 0; k < 6; ++k)
-  {
-    const int i = k / 2;
-    const int j = (i + 1) % 3;
-    const int m = (i + 2) % 3;
-    Vec3 n(0.0);
-    n[i] = 1.0;
-    n[j] = k % 2 == 0 ? -1.0 : 1.0;
-    const double qn = glm::dot(q, n);
-    const double s = -glm::dot(p, n) / (std::abs(qn) > 1.0e-9 ? qn : 1.0e-9);
-    const Vec3 h = p + s * q;
-    const double r = glm::length(h);
-    const Vec3 towards = h / std::max(r, 1.0e-6);
-    const Vec3 salt = double(k) * Vec3(3.7, 1.9, 5.3);
-    const double streak = SmoothStep(0.5, 0.85, LatticeNoise(17.0 * towards + salt)) *
-      SmoothStep(0.35, 0.75, LatticeNoise(6.0 * h - salt));
-    const double sheet = weight[i] * SmoothStep(0.0, 0.12, std::abs(h[i]) - std::abs(h[m])) *
-      (1.0 - SmoothStep(0.35, 0.85, r)) * SmoothStep(0.05, 0.2, r) * streak;
-    const double slant = 0.70710678118654752 * std::abs(qn) / speed;
-    const double a = std::min(density * sheet * SmoothStep(0.1, 0.4, slant), 0.6);
-    keep *= s > 0.0 && s < sEnd ? 1.0 - a : 1.0;
-  }
-  return keep;
 }
 
 // The eye ray's path through the ice between the view depths of its front and back faces
