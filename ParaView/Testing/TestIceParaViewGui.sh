@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 # SPDX-License-Identifier: BSD-3-Clause
-# The ParaView application with the plugin: a rounded block shown as Ice in an Ice View, with its Ice
-# property group; a screenshot of the whole screen (the window) goes to $out/paraview-gui.png.
+# The ParaView application with the plugin: a rounded block shown as Ice in an Ice View, with its
+# Ice property group; a screenshot of the whole screen (the window) goes to $out/paraview-gui.png.
 set -euo pipefail
 paraview=$1 plugin_dir=$2 out=$3
 result="$out/gui-result.txt"

@@ -34,7 +34,6 @@ view.DynamicEnvironment = 1
 view.OrientationAxesVisibility = 0
 
 
-
 def ground_texture(path, half, texels=2048, seed=7):
     """Mottled earth of the panorama's colour, with the block's soft contact shadow at the middle,
     as a PNG for a square ground of side 2 * half (rows along +z); returns its texture proxy."""
@@ -56,9 +55,11 @@ def ground_texture(path, half, texels=2048, seed=7):
     # middle), fading over a few tenths, lighter under the clear foot.
     z, x = numpy.meshgrid(numpy.linspace(-half, half, texels), numpy.linspace(-half, half, texels),
                           indexing="ij")
-    outside = numpy.hypot(numpy.maximum(numpy.abs(x) - 0.4, 0), numpy.maximum(numpy.abs(z) - 0.4, 0))
+    outside = numpy.hypot(numpy.maximum(numpy.abs(x) - 0.4, 0),
+                          numpy.maximum(numpy.abs(z) - 0.4, 0))
     inside = numpy.minimum(numpy.maximum(numpy.abs(x), numpy.abs(z)), 0.4)
-    shadow = numpy.where(outside > 0, 0.55 * numpy.exp(-outside / 0.12), 0.55 - 0.35 * (0.4 - inside) / 0.4)
+    shadow = numpy.where(outside > 0, 0.55 * numpy.exp(-outside / 0.12),
+                         0.55 - 0.35 * (0.4 - inside) / 0.4)
     rgb = (mottle * (1 - shadow))[..., None] * numpy.array([0.3, 0.27, 0.23])
     image = vtkImageData()
     image.SetDimensions(texels, texels, 1)
