@@ -29,8 +29,8 @@ uniform vec3 iceTraceCoreColour;
 #ifdef ICE_TRACE_BUBBLES
 // The bubbles (vtkIceInteriorFS.glsl's iceBubbles, declared before this) on the first segment
 // after a reflection inside, where a face that reflects totally shows the core's bubbles, and
-// only within this distance of the core's centre in its frame (where iceBubbleProfile ends them):
-// the grid's walk is the cost. Later segments carry little light.
+// only within this distance of the core's centre in its frame (iceBubbleProfile ends them at
+// 1.73): the grid's walk is the cost. Later segments carry little light.
 const float iceTraceBubbleReach = 1.7;
 #endif
 #ifdef ICE_TRACE_WET_BASE
