@@ -49,11 +49,14 @@ vec3 iceCellRandom(ivec3 c)
 // as the core's cloud does (ice freezes from its faces inwards, pushing the air to the middle).
 // A Gaussian, as the cloud: a rounded cube's steeper edge (exp(-sum u^4)) showed through the
 // faces as the outline of a second, smaller block inside the ice. None where the Gaussian is
-// under 5 % (1.73 from the centre): the last freezing water holds the air, the shell around it
-// is clear; its sparse bubbles read as glitter sprinkled through the ice.
+// under iceBubbleFloor (beyond iceBubbleReach, 1.73, from the centre): the last freezing water
+// holds the air, the shell around it is clear; its sparse bubbles read as glitter sprinkled
+// through the ice.
+const float iceBubbleFloor = 0.05;
+const float iceBubbleReach = sqrt(-log(iceBubbleFloor));
 float iceBubbleProfile(vec3 u)
 {
-  return max(exp(-dot(u, u)) - 0.05, 0.0) / 0.95;
+  return max(exp(-dot(u, u)) - iceBubbleFloor, 0.0) / (1.0 - iceBubbleFloor);
 }
 
 //ICE::Bubbles

@@ -29,9 +29,8 @@ uniform vec3 iceTraceCoreColour;
 #ifdef ICE_TRACE_BUBBLES
 // The bubbles (vtkIceInteriorFS.glsl's iceBubbles, declared before this) on the first segment
 // after a reflection inside, where a face that reflects totally shows the core's bubbles, and
-// only within this distance of the core's centre in its frame (iceBubbleProfile ends them at
-// 1.73): the grid's walk is the cost. Later segments carry little light.
-const float iceTraceBubbleReach = 1.7;
+// only within iceBubbleReach of the core's centre in its frame (where iceBubbleProfile ends
+// them): the grid's walk is the cost. Later segments carry little light.
 #endif
 #ifdef ICE_TRACE_WET_BASE
 // vtkIceMapper::WetBase: where the ice stands in water, in model y: fully wet below x, dry above y.
@@ -274,7 +273,7 @@ vec3 iceTracedRefraction(vec3 e, vec3 positionWC, vec3 nFront, float eta, bool w
       vec3 du = dModel * iceCoreScale;
       float a = dot(du, du);
       float b = dot(u, du);
-      float reach = b * b - a * (dot(u, u) - iceTraceBubbleReach * iceTraceBubbleReach);
+      float reach = b * b - a * (dot(u, u) - iceBubbleReach * iceBubbleReach);
       float s0 = reach > 0.0 ? max((-b - sqrt(reach)) / a, 0.0) : t;
       float s1 = reach > 0.0 ? min((-b + sqrt(reach)) / a, t) : 0.0;
       if (s1 > s0)
