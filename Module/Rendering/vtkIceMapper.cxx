@@ -428,9 +428,18 @@ void vtkIceMapper::SetEnvironmentUniforms(vtkShaderProgram* program)
 {
   // A dynamic cube map holds the scene at the raw world direction.
   static const float identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  program->SetUniformMatrix3x3("iceEnvironmentMatrix",
-    const_cast<float*>(
-      this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity));
+  float lookup[9];
+  const float* matrix =
+    this->ActiveEnvironmentObject ? this->Environment->GetLookupMatrix() : identity;
+  std::copy(matrix, matrix + 9, lookup);
+  if (this->MirroredEnvironment)
+  {
+    // The lookup of the mirrored direction (x, -y, z): the matrix's second column negated.
+    lookup[3] = -lookup[3];
+    lookup[4] = -lookup[4];
+    lookup[5] = -lookup[5];
+  }
+  program->SetUniformMatrix3x3("iceEnvironmentMatrix", lookup);
   program->SetUniformi("iceEnvironmentColorSpace",
     this->ActiveEnvironmentObject ? this->Environment->GetColorSpace() : 0);
   // Beer-Lambert's factor acts on light: on gamma-encoded colours it is its own 1/2.2th power
@@ -832,6 +841,7 @@ void vtkIceMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxBounces: " << this->MaxBounces << "\n";
   os << indent << "TraceAntiAliasing: " << (this->TraceAntiAliasing ? "On" : "Off") << "\n";
   os << indent << "WetBase: " << (this->WetBase ? "On" : "Off") << "\n";
+  os << indent << "MirroredEnvironment: " << (this->MirroredEnvironment ? "On" : "Off") << "\n";
   os << indent << "CullHiddenBackfaces: " << (this->CullHiddenBackfaces ? "On" : "Off") << "\n";
   os << indent << "LastDrawCulledBackfaces: " << this->LastDrawCulledBackfaces << "\n";
   static const char* const interiorMethods[] = { "PaperPasses", "ScreenSpace" };

@@ -165,6 +165,18 @@ public:
 
   ///@{
   /**
+   * Whether the mapper draws a mirror image of ice in a horizontal mirror (the model's points
+   * reflected in a plane of constant world y, as a pool of water under the ice shows it): it then
+   * looks its environment up at y-mirrored world directions, so the image shows the sky where
+   * the ice shows the sky, as a reflection does, not the ground below the mirror. Default off.
+   */
+  vtkSetMacro(MirroredEnvironment, bool);
+  vtkGetMacro(MirroredEnvironment, bool);
+  vtkBooleanMacro(MirroredEnvironment, bool);
+  ///@}
+
+  ///@{
+  /**
    * Whether the mapper warns (once) when the renderer has no usable environment texture and the
    * ice reflects the built-in sky. Default on. ParaView's Ice representation turns it off: its
    * views have no environment unless the background is a skybox, and the sky is the default there.
@@ -368,6 +380,7 @@ protected:
   int MaxBounces = 1;
   bool TraceAntiAliasing = true;
   bool WetBase = false;
+  bool MirroredEnvironment = false;
   // The triangle tree MaxBounces traces (made on first use), and whether a failed build was said.
   std::unique_ptr<vtkIceTraceTextures> Trace;
   bool WarnedTraceUnusable = false;
