@@ -466,6 +466,8 @@ vtkActor* AddMirrorImage(vtkRenderer* renderer, vtkPolyData* model)
   turned->Update();
   vtkNew<vtkIceMapper> mapper;
   mapper->SetInputData(turned->GetOutput());
+  // It shows the sky where the ice shows the sky, as a reflection does.
+  mapper->MirroredEnvironmentOn();
   vtkNew<vtkActor> image;
   image->SetMapper(mapper);
   image->PickableOff();
