@@ -280,7 +280,7 @@ vtkSmartPointer<vtkActor> MakeGround(
   // camera's glancing view of the pool (about 72 degrees), and the ice it mirrors is brighter than
   // the ground (it shows the sky): with these shares the pool is closest to the path-traced
   // target's (Testing/PathTraced/natural_ice_cube.py, FLIP 0.2224 against 0.2230 with 0.15 and
-  // 0.15), and read as water in blind comparisons.
+  // 0.15): the image and the ground mix as displayed colours, not as light.
   const double mirrorShare = 0.3;
   const double sheenShare = 0.09;
   // The stone's brightness first, then blurred: its single grains a few pixels wide at the ice's

@@ -21,8 +21,9 @@ namespace IceGround
 // model's lowest y: the texels of a square of half size `halfSize` around the origin in x and
 // z, `texels` a side, 0 (open ground) to 1 (what the ice's bottom covers), softened with the
 // distance a surface lies above the plane, none well under the ice; (the second component) how
-// wet the ground is around the ice's foot, 0 to 1, with an uneven edge; and (the third) the light
-// the ice gathers on the ground under it, 0 to 1. Three components, double.
+// wet the ground is around the ice's foot, 0 to 1, with an uneven edge and a trickle running off;
+// and (the third) the light the ice gathers on the ground under it, 0 to 1. Three components,
+// double.
 vtkSmartPointer<vtkImageData> ContactShadow(vtkPolyData* model, double halfSize, int texels);
 
 // The mean colour of faces of a cube-map environment (OpenGL's order: +X, -X, +Y, -Y, +Z, -Z; -Y is
