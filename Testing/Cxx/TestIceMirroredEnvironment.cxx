@@ -1,9 +1,11 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkIceMapper::MirroredEnvironment: ice whose points are reflected in the plane y = 0, seen by a
-// camera in that plane, shows the picture of the ice itself upside down, as a reflection does (the
-// environment looked up at y-mirrored directions too, through the surface and the trace). Without
-// it the reflected ice shows the environment's other half.
+// vtkIceMapper::MirroredEnvironment, as ice-render's melt pool uses it: the ice's mirror image
+// (IceScene::AddMirrorImage, the model reflected about its foot), seen by a camera in the plane of
+// its foot, is the picture of the ice itself upside down, as a reflection is (the environment
+// looked up at y-mirrored directions, through the surface and the trace). Without it the image
+// shows the environment's other half.
+#include "IceScene.h"
 #include "IceTestUtilities.h"
 #include "vtkIceCubeMapSource.h"
 #include "vtkIceMapper.h"
@@ -13,51 +15,50 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkReverseSense.h"
 #include "vtkTexture.h"
-#include "vtkTransform.h"
-#include "vtkTransformPolyDataFilter.h"
 
 #include <algorithm>
 #include <cstdlib>
-#include <iostream>
 #include <string>
 
 namespace
 {
-// The picture of the teapot (reflected in y = 0 and so looked up, or not) from a camera in that
-// plane, against a black background, in the sky (a sky above, a ground below).
-IceTest::Image Render(bool reflected, bool mirroredLookups)
+// The picture of the teapot (or of its mirror image, its environment looked up mirrored or not)
+// from a camera in the plane of its foot, against a black background, in the sky (a sky above, a
+// ground below).
+IceTest::Image Render(bool mirrorImage, bool mirroredLookups)
 {
   vtkNew<vtkIceTeapotSource> teapot;
-  vtkNew<vtkTransform> reflect;
-  reflect->Scale(1.0, reflected ? -1.0 : 1.0, 1.0);
-  vtkNew<vtkTransformPolyDataFilter> transformed;
-  transformed->SetInputConnection(teapot->GetOutputPort());
-  transformed->SetTransform(reflect);
-  vtkNew<vtkReverseSense> turned; // a reflection turns the cells inside out
-  turned->SetInputConnection(transformed->GetOutputPort());
-  turned->SetReverseCells(reflected);
-  turned->ReverseNormalsOff();
-
-  vtkNew<vtkIceMapper> mapper;
-  mapper->SetInputConnection(turned->GetOutputPort());
-  mapper->SetMirroredEnvironment(mirroredLookups);
-  IceTest::UseCleanOptics(mapper);
-  vtkNew<vtkActor> ice;
-  ice->SetMapper(mapper);
+  teapot->Update();
+  vtkPolyData* model = teapot->GetOutput();
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.0, 0.0, 0.0);
-  renderer->SetEnvironmentTexture(
-    IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 64));
+  renderer->SetEnvironmentTexture(IceTest::MakeCubeMap(vtkIceCubeMapSource::Sky, 64));
   vtkNew<vtkIcePass> pass;
   renderer->SetPass(pass);
-  renderer->AddActor(ice);
+  vtkIceMapper* mapper = nullptr;
+  if (mirrorImage)
+  {
+    mapper = vtkIceMapper::SafeDownCast(IceScene::AddMirrorImage(renderer, model)->GetMapper());
+  }
+  else
+  {
+    vtkNew<vtkIceMapper> ice;
+    ice->SetInputData(model);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(ice);
+    renderer->AddActor(actor);
+    mapper = ice;
+  }
+  mapper->SetMirroredEnvironment(mirroredLookups);
+  IceTest::UseCleanOptics(mapper);
+  const double foot = model->GetBounds()[2];
   vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(1.5, 0.0, 4.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(1.5, foot, 4.0);
+  camera->SetFocalPoint(0.0, foot, 0.0);
   camera->SetViewUp(0.0, 1.0, 0.0);
   renderer->ResetCameraClippingRange();
   vtkNew<vtkRenderWindow> window;
@@ -91,11 +92,11 @@ int TestIceMirroredEnvironment(int, char*[])
   const double mirrored = MeanFlippedDifference(ice, Render(true, true));
   const double unmirrored = MeanFlippedDifference(ice, Render(true, false));
   bool ok = IceTest::Expect(mirrored < 0.5,
-    "with MirroredEnvironment the reflected teapot is the teapot's picture upside down (mean " +
+    "with MirroredEnvironment the mirror image is the teapot's picture upside down (mean " +
       std::to_string(mirrored) + "/255)");
   // The measure tells the two apart: without the mirrored lookups the image differs.
   ok = IceTest::Expect(unmirrored > 10.0 * std::max(mirrored, 0.5),
-         "without it the reflected teapot shows other directions (mean " +
+         "without it the mirror image shows other directions (mean " +
            std::to_string(unmirrored) + "/255)") &&
     ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
