@@ -67,13 +67,21 @@ std::vector<IceBench::Target> IceBench::EvaluateTargets(const std::vector<Group>
     ratio(std::string("static environment, two-sided (") + object + ")", "<= 1.3x", 1.3,
       Find(groups, id, [](const Configuration& c) { return c.Ice == Material::TwoSided; }));
   }
+  auto fullLook = [&](const char* object) {
+    return Find(groups, std::string("objects-") + object, [](const Configuration& c) {
+      return c.Ice == Material::FullLook && c.Interior == Default();
+    });
+  };
   for (const char* object : { "sphere", "block", "teapot" })
   {
-    const std::string id = std::string("objects-") + object;
     ratio(std::string("full look, default interior (") + object + ")", "<= 1.5x", 1.5,
-      Find(groups, id, [](const Configuration& c) {
-        return c.Ice == Material::FullLook && c.Interior == Default();
-      }));
+      fullLook(object));
+  }
+  // Issue 36 asked 1.5x (a GPU's figure); issue 50 asks 2.5x on llvmpipe.
+  for (const char* object : { "sphere", "block", "teapot" })
+  {
+    ratio(std::string("full look, issue 50's bound for llvmpipe (") + object + ")", "<= 2.5x",
+      2.5, fullLook(object));
   }
   ratio("dynamic cube map every frame (teapot, landscape, 512)", "<= 3x", 3.0,
     Find(groups, "dynamic-teapot", [](const Configuration& c) {

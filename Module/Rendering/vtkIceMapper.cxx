@@ -17,6 +17,7 @@
 #include "vtkIcePropertyUniforms.h"
 #include "vtkIceShaderSections.h"
 #include "vtkIceInteriorTable.h"
+#include "vtkIceLateDepthTest.h"
 #include "vtkIceStaticEnvironment.h"
 #include "vtkIceSurfaceCheck.h"
 #include "vtkIceScreenInteriorFS.h"
@@ -59,7 +60,8 @@ enum ShaderParts
   TraceBubblesPart = 512,
   TraceAirPart = 1024,
   EncodedEnvironmentPart = 2048, // the environment shown gamma-corrected (ICE_ENVIRONMENT_SPACE)
-  TraceWetBasePart = 4096
+  TraceWetBasePart = 4096,
+  LateDepthTestPart = 8192 // llvmpipe into a multisampled target (vtkIceLateDepthTest)
 };
 
 }
@@ -268,6 +270,11 @@ int vtkIceMapper::ShaderVariant() const
   {
     variant |= EncodedEnvironmentPart;
   }
+  // Known from RenderPieceStart, as the environment.
+  if (this->LateDepthTest)
+  {
+    variant |= LateDepthTestPart;
+  }
   return variant;
 }
 
@@ -305,6 +312,8 @@ void vtkIceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->HelpersSawPass = false;
   }
   this->BindEnvironment(ren, act);
+  // The framebuffer drawn into is bound: the sub-passes' are single-sampled, the scene's may not.
+  this->LateDepthTest = vtkIceLateDepthTest::Wanted();
   if (this->IceProperty->GetNormalMap() && this->IceProperty->GetBumpStrength() > 0.0)
   {
     this->IceProperty->GetNormalMap()->Render(ren);
@@ -488,6 +497,12 @@ void vtkIceMapper::AddIceShaderParts(vtkIceShaderParts& parts, vtkRenderer* ren,
   parts.FragmentDeclarations +=
     optics + Get(vtkIceSurfaceFS, "Environment") + Get(vtkIceSurfaceFS, "Dec");
   parts.FragmentImpl += Get(vtkIceSurfaceFS, "Impl");
+  if (variant & LateDepthTestPart)
+  {
+    parts.FragmentExtensions += vtkIceLateDepthTest::Extension();
+    parts.FragmentDeclarations += vtkIceLateDepthTest::Declarations();
+    parts.FragmentImpl += vtkIceLateDepthTest::Code();
+  }
   if (this->DrawsScalarColors())
   {
     // VTK's colour code (before the lighting) holds the mapped colour times the diffuse

@@ -404,6 +404,7 @@ protected:
   vtkSmartPointer<vtkIceGlisteningTexture> GlisteningNoise;
 
   std::map<const vtkOpenGLHelper*, int> ShaderVariantBuilt;
+  bool LateDepthTest = false; // vtkIceLateDepthTest::Wanted at the draw
   std::unique_ptr<vtkIceInteriorTable> InteriorTable; // the screen-space interior's records
   bool InteriorPrepared = false;                      // during a draw
 

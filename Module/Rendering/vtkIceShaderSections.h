@@ -18,6 +18,7 @@ struct vtkIceShaderParts
 {
   std::string VertexDeclarations;   // after //VTK::Normal::Dec
   std::string VertexImpl;           // after //VTK::Light::Impl
+  std::string FragmentExtensions;   // after //VTK::System::Dec (the #version line): #extension
   std::string FragmentDeclarations; // after //VTK::Normal::Dec
   std::string FragmentNormalImpl;   // after //VTK::Normal::Impl: before VTK's lighting
   std::string FragmentImpl;         // after //VTK::Light::Impl: after it
@@ -80,6 +81,11 @@ inline std::string Insert(const vtkIceShaderParts& parts, std::string& vs, std::
   note(InsertAfterTag(vs, "//VTK::Normal::Dec", parts.VertexDeclarations),
     "//VTK::Normal::Dec (vertex)");
   note(InsertAfterTag(vs, "//VTK::Light::Impl", parts.VertexImpl), "//VTK::Light::Impl (vertex)");
+  if (!parts.FragmentExtensions.empty())
+  {
+    note(InsertAfterTag(fs, "//VTK::System::Dec", parts.FragmentExtensions),
+      "//VTK::System::Dec (fragment)");
+  }
   note(InsertAfterTag(fs, "//VTK::Normal::Dec", parts.FragmentDeclarations),
     "//VTK::Normal::Dec (fragment)");
   note(InsertAfterTag(fs, "//VTK::Normal::Impl", parts.FragmentNormalImpl),
