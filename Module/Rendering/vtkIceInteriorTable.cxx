@@ -263,14 +263,17 @@ void vtkIceInteriorTable::Upload(vtkOpenGLRenderWindow* window)
   }
   if (!this->Uploaded)
   {
-    // Rows 0-2: the outlines (R); then the records, cracks first, planes back to front.
+    // Rows 0-2: the outlines, each sample (R) with the next round the turn (G): one lookup
+    // between the two. Then the records, cracks first, planes back to front.
     const int records = this->Cracks + this->AirPlanes;
     const int rows = 3 + std::max(1, (records + RecordsPerRow - 1) / RecordsPerRow);
     std::vector<float> texels(static_cast<size_t>(4 * OutlineSamples) * rows, 0.0f);
     const std::vector<float>& outlines = this->CrackTable->GetOutlines();
     for (size_t i = 0; i < outlines.size(); ++i)
     {
+      const size_t turn = i - i % OutlineSamples;
       texels[4 * i] = outlines[i];
+      texels[4 * i + 1] = outlines[turn + (i + 1) % OutlineSamples];
     }
     float* first = &texels[static_cast<size_t>(4 * OutlineSamples) * 3];
     const std::vector<float>& cracks = this->CrackTable->GetRecords();

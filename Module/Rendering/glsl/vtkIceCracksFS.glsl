@@ -57,10 +57,8 @@ IceLocalRay iceLocalRay(int record, vec3 o, vec3 d)
 float iceCrackOutline(int model, float angle)
 {
   float x = fract(angle / 6.2831853) * float(iceOutlineSamples);
-  int i = int(x) % iceOutlineSamples;
-  float r0 = texelFetch(iceInteriorTable, ivec2(i, model), 0).r;
-  float r1 = texelFetch(iceInteriorTable, ivec2((i + 1) % iceOutlineSamples, model), 0).r;
-  return mix(r0, r1, fract(x));
+  vec2 r = texelFetch(iceInteriorTable, ivec2(int(x) % iceOutlineSamples, model), 0).rg;
+  return mix(r.x, r.y, fract(x));
 }
 
 // A walk through the cells of a grid along the ray p + s v (grid units: cells of side 1), front
