@@ -52,12 +52,12 @@ void StoreInverse(vtkTransform* placement, float* record)
   }
 }
 
-// The corners of the box [-r, r]^2 x [z0, z1] of a record's own frame, placed in the model.
-void StoreCorners(vtkTransform* placement, double r, const double z[2], double* corners)
+// The corners of an air plane's quad, [-1, 1]^2 at z = 0 of its own frame, placed in the model.
+void StoreQuad(vtkTransform* placement, double* corners)
 {
-  for (int corner = 0; corner < 8; ++corner)
+  for (int corner = 0; corner < 4; ++corner)
   {
-    const double local[3] = { corner & 1 ? r : -r, corner & 2 ? r : -r, z[(corner >> 2) & 1] };
+    const double local[3] = { corner & 1 ? 1.0 : -1.0, corner & 2 ? 1.0 : -1.0, 0.0 };
     placement->TransformPoint(local, corners + 3 * corner);
   }
 }
@@ -214,7 +214,7 @@ void vtkIceInteriorTable::Place(vtkPolyData* ice, vtkIceProperty* look, const Pl
 
   this->CrackTable->Build(this->CrackSeed, this->Cracks, bounds);
   this->Grid->Build(this->CrackTable->GetSheets(), bounds);
-  this->AirCorners.assign(24 * static_cast<size_t>(this->AirPlanes), 0.0);
+  this->AirCorners.assign(12 * static_cast<size_t>(this->AirPlanes), 0.0);
   this->AirRecords.assign(16 * static_cast<size_t>(this->AirPlanes), 0.0f);
   this->AirCenters.assign(3 * static_cast<size_t>(this->AirPlanes), 0.0);
   for (int i = 0; i < this->AirPlanes; ++i)
@@ -228,8 +228,7 @@ void vtkIceInteriorTable::Place(vtkPolyData* ice, vtkIceProperty* look, const Pl
     record[12] = static_cast<float>(tile[0]);
     record[13] = static_cast<float>(tile[1]);
     where->GetPosition(&this->AirCenters[3 * static_cast<size_t>(i)]);
-    const double flat[2] = { 0.0, 0.0 };
-    StoreCorners(where, 1.0, flat, &this->AirCorners[24 * static_cast<size_t>(i)]);
+    StoreQuad(where, &this->AirCorners[12 * static_cast<size_t>(i)]);
   }
   this->AirOrder.clear();
 }
@@ -487,9 +486,16 @@ void vtkIceInteriorTable::ReleaseGraphicsResources(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceInteriorTable::GetCorners(int position, double corners[24]) const
+void vtkIceInteriorTable::GetAirQuad(int k, double corners[12], double atlas[8]) const
 {
-  const double* from =
-    &this->AirCorners[24 * static_cast<size_t>(this->AirOrder[position - this->Cracks])];
-  std::copy(from, from + 24, corners);
+  const size_t plane = static_cast<size_t>(this->AirOrder[static_cast<size_t>(k)]);
+  std::copy(&this->AirCorners[12 * plane], &this->AirCorners[12 * plane] + 12, corners);
+  const float* record = &this->AirRecords[16 * plane];
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    atlas[2 * corner] = record[12] + vtkIceAirGeometry::TileInset +
+      vtkIceAirGeometry::TileScale * (corner & 1 ? 2.0 : 0.0);
+    atlas[2 * corner + 1] = record[13] + vtkIceAirGeometry::TileInset +
+      vtkIceAirGeometry::TileScale * (corner & 2 ? 2.0 : 0.0);
+  }
 }

@@ -72,7 +72,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
   // The records in the table's order (cracks, then air planes back to front) since the last
-  // Prepare, and the model-space box around air record `position`'s plane (8 corners).
+  // Prepare.
   int GetNumberOfCracks() const { return this->Cracks; }
   // The air planes the shader reads (none without the bubble atlas), between Prepare and Finish.
   int GetNumberOfAirPlanes() const
@@ -80,7 +80,10 @@ public:
     return this->ActiveAtlas ? static_cast<int>(this->AirOrder.size()) : 0;
   }
   int GetNumberOfRecords() const { return this->Cracks + static_cast<int>(this->AirOrder.size()); }
-  void GetCorners(int position, double corners[24]) const;
+  // Air plane `k` back to front (0 the farthest): its quad's corners in model coordinates
+  // (x, y = -1 or 1 in its frame: (-1, -1), (1, -1), (-1, 1), (1, 1)) and their coordinates in
+  // the bubble atlas (its tile's, as vtkIceAirGeometry gives them).
+  void GetAirQuad(int k, double corners[12], double atlas[8]) const;
 
 private:
   void Place(vtkPolyData* ice, vtkIceProperty* look, const Placement& placement);
@@ -105,7 +108,7 @@ private:
   std::vector<float> AirRecords;   // 16 floats each, in placement order
   std::vector<double> AirCenters;  // 3 each
   std::vector<vtkIdType> AirOrder; // back to front
-  std::vector<double> AirCorners;  // 24 each, in placement order
+  std::vector<double> AirCorners;  // 12 each, in placement order
   bool Uploaded = false;
   vtkSmartPointer<vtkTextureObject> Table;
   vtkSmartPointer<vtkTextureObject> Bump;

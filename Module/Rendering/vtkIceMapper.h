@@ -320,12 +320,14 @@ public:
    * CracksPerturbRefraction) and air planes (over the scene, back to front), each drawn only when
    * the mapper's settings ask for it; and the screen-space interior's table, textures,
    * environment and look readied for its `program` until EndScreenInterior (returns the records
-   * readied, or null, with nothing to end, when there is no input to draw).
+   * readied, or null, with nothing to end, when there is no input to draw); in between, the same
+   * uniforms on its other programs.
    */
   void DrawPaperCracks(vtkRenderer* ren, vtkActor* actor, bool overlay);
   void DrawPaperAir(vtkRenderer* ren, vtkActor* actor);
   const vtkIceInteriorTable* BeginScreenInterior(
     vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program);
+  void SetScreenInteriorUniforms(vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program);
   void EndScreenInterior(vtkRenderer* ren);
   ///@}
 #endif
@@ -363,8 +365,8 @@ protected:
   bool HasInterior() const;
   bool UsesScreenInterior() const;
   // The screen step's interior: its table and textures ready for a draw of `act` (until
-  // FinishInterior), its uniforms set on `program` (vtkIceMapperInterior.cxx).
-  void PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program);
+  // FinishInterior; vtkIceMapperInterior.cxx).
+  void PrepareInterior(vtkRenderer* ren, vtkActor* act);
   void FinishInterior(vtkRenderer* ren);
   // The environment the ice samples in a draw of `act` (a dynamic cube map is bound by the
   // frame): bound until UnbindEnvironment, its uniforms set on `program`. Called for the surface

@@ -90,12 +90,20 @@ const vtkIceInteriorTable* vtkIceMapper::BeginScreenInterior(
   {
     return nullptr;
   }
+  this->BindEnvironment(ren, actor);
+  this->PrepareInterior(ren, actor);
+  this->SetScreenInteriorUniforms(ren, actor, program);
+  return this->InteriorTable.get();
+}
+
+//------------------------------------------------------------------------------
+void vtkIceMapper::SetScreenInteriorUniforms(
+  vtkRenderer* ren, vtkActor* actor, vtkShaderProgram* program)
+{
   this->SetCameraUniforms(program, ren, actor);
   vtkIcePropertyUniforms::Set(this->GetIceProperty(), program);
-  this->BindEnvironment(ren, actor);
   this->SetEnvironmentUniforms(program);
-  this->PrepareInterior(ren, actor, program);
-  return this->InteriorTable.get();
+  this->InteriorTable->SetUniforms(program);
 }
 
 //------------------------------------------------------------------------------
@@ -106,7 +114,7 @@ void vtkIceMapper::EndScreenInterior(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
-void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderProgram* program)
+void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act)
 {
   if (!this->InteriorPrepared)
   {
@@ -117,7 +125,6 @@ void vtkIceMapper::PrepareInterior(vtkRenderer* ren, vtkActor* act, vtkShaderPro
       this->Interior->GetAirAtlas(this->IceProperty->GetAirSeed()));
     this->InteriorPrepared = true;
   }
-  this->InteriorTable->SetUniforms(program);
 }
 
 //------------------------------------------------------------------------------

@@ -35,32 +35,40 @@ vtkIceScreenInterior::~vtkIceScreenInterior() = default;
 
 namespace
 {
-// What of the interior the look has, as the quad's #defines: the milky core and bubbles, the air
-// planes, the cracks; only those are compiled in (llvmpipe would run the code of the others
-// anyway). Empty: the look has no interior, and the quad would add nothing.
-std::string InteriorParts(vtkIceProperty* look)
+// What of the interior the look has: the milky core and bubbles, the air planes, the cracks. Each
+// part's code is compiled in only where the look has it (llvmpipe would run the others anyway).
+struct Parts
 {
-  return std::string(look->HasMilkyCore() || look->GetBubbleDensity() > 0.0
-                       ? "#define ICE_INTERIOR_CLOUD\n"
-                       : "") +
-    (look->GetNumberOfAirPlanes() > 0 ? "#define ICE_INTERIOR_AIR\n" : "") +
-    (look->GetNumberOfCracks() > 0 ? "#define ICE_INTERIOR_CRACKS\n" : "");
+  bool Cloud;
+  bool Air;
+  bool Cracks;
+};
+
+Parts InteriorParts(vtkIceProperty* look)
+{
+  return { look->HasMilkyCore() || look->GetBubbleDensity() > 0.0,
+    look->GetNumberOfAirPlanes() > 0, look->GetNumberOfCracks() > 0 };
 }
 
-// The quad's fragment shader for the renderer's lights (VTK's declarations and light loop, as
-// the surface's), an environment sampled rough or sharp, and the interior's parts.
-std::string QuadShader(vtkOpenGLRenderer* renderer, vtkIceProperty* look, const std::string& parts)
+// The programs' declarations for the renderer's lights (VTK's declarations and light loop, as
+// the surface's), an environment sampled rough or sharp, and the interior's parts (`defines`).
+std::string Declarations(
+  vtkOpenGLRenderer* renderer, vtkIceProperty* look, const std::string& defines)
 {
   using vtkIceShaderSections::Get;
   const int complexity = renderer->GetLightingCount() > 0 ? renderer->GetLightingComplexity() : 0;
-  std::string declarations =
-    std::string(look->GetRoughness() > 0.0 ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") + parts +
-    renderer->GetLightingUniforms() + vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") +
+  return std::string(look->GetRoughness() > 0.0 ? "#define ICE_ROUGH_ENVIRONMENT\n" : "") +
+    defines + renderer->GetLightingUniforms() + vtkIceOptics + Get(vtkIceWorldSpaceFS, "Uniforms") +
     Get(vtkIceSurfaceFS, "Environment") + "uniform float iceRefractionRatio;\n" +
-    Get(vtkIceDepthIntervalFS, "Normal") +
-    Get(vtkIceScreenInteriorFS, "Tiles") + vtkIceInteriorTable::Declarations() +
+    Get(vtkIceDepthIntervalFS, "Normal") + vtkIceInteriorTable::Declarations() +
     vtkIceInteriorTable::Functions(complexity, renderer->GetLightingCount()) +
     Get(vtkIceScreenInteriorFS, "Dec") + Get(vtkIceExitPointFS, "Exit");
+}
+
+// The quad's fragment shader: the declarations in VTK's full-screen-quad template.
+std::string QuadShader(const std::string& declarations)
+{
+  using vtkIceShaderSections::Get;
   std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
   vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", declarations);
   vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", Get(vtkIceScreenInteriorFS, "Impl"));
@@ -76,6 +84,23 @@ std::string QuadVertexShader()
     vs, "gl_Position = ndCoordIn;", "gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);");
   return vs;
 }
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLQuadHelper* vtkIceScreenInterior::ReadyQuad(
+  vtkOpenGLRenderWindow* window, const std::string& declarations)
+{
+  const std::string source = QuadShader(declarations);
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(window, QuadVertexShader().c_str(), source.c_str(), ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  return quad->Program ? quad.get() : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -100,27 +125,34 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
     drawing.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     this->Cleared = true;
   }
-  // The quad at the far plane passes where the front faces are nearer; their depth stays.
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglDepthFunc(GL_GREATER);
-
-  const std::string parts = InteriorParts(mapper->GetIceProperty());
-  if (parts.empty())
+  vtkIceProperty* look = mapper->GetIceProperty();
+  const Parts parts = InteriorParts(look);
+  if (!parts.Cloud && !parts.Air && !parts.Cracks)
   {
     return; // cleared: nothing added, all of the ice colour kept
   }
-  const std::string source = QuadShader(renderer, mapper->GetIceProperty(), parts);
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
-  if (!quad)
-  {
-    quad.reset(new vtkOpenGLQuadHelper(window, QuadVertexShader().c_str(), source.c_str(), ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  }
-  vtkShaderProgram* program = quad->Program;
-  if (!program)
+
+  // The draws, back to front: the milky core behind the air planes, the planes, the rest (the
+  // bubbles, the cracks; and the core where no plane lies between). Each composes its
+  // vec4(add, keep) in front of what the target holds: colour add + keep * colour, alpha
+  // keep * alpha. The quads pass where the prop's front faces are nearer (the far plane's depth
+  // against theirs), the planes where they lie behind them; neither writes depth.
+  const bool coreFirst = parts.Air && look->HasMilkyCore();
+  const bool rest =
+    parts.Cracks || (parts.Cloud && (!coreFirst || look->GetBubbleDensity() > 0.0));
+  const std::string common = parts.Cloud ? "#define ICE_INTERIOR_CLOUD\n" : "";
+  vtkOpenGLQuadHelper* core = coreFirst
+    ? this->ReadyQuad(
+        window, Declarations(renderer, look, common + "#define ICE_INTERIOR_CORE_ONLY\n"))
+    : nullptr;
+  vtkShaderProgram* planes =
+    parts.Air ? this->Air.Ready(window, Declarations(renderer, look, common)) : nullptr;
+  vtkOpenGLQuadHelper* after = rest
+    ? this->ReadyQuad(window, Declarations(renderer, look, common +
+        (parts.Cracks ? "#define ICE_INTERIOR_CRACKS\n" : "") +
+        (coreFirst ? "#define ICE_INTERIOR_AFTER_CORE\n" : "")))
+    : nullptr;
+  if ((coreFirst && !core) || (parts.Air && !planes) || (rest && !after))
   {
     return;
   }
@@ -135,22 +167,57 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   vtkProp* prop = actor;
   vtkIceScreenRegion::Covered(renderer, &prop, 1, width, height, covered);
   state->vtkglScissor(covered[0], covered[1], covered[2] - covered[0], covered[3] - covered[1]);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglDepthFunc(GL_GREATER);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blending(state);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ZERO, GL_SRC_ALPHA);
+  vtkOpenGLState::ScopedglEnableDisable culling(state, GL_CULL_FACE);
+  state->vtkglDisable(GL_CULL_FACE);
 
-  frame->Textures.BindScreen(program, renderer, "iceDepthInterval", frontDepth);
-  frame->Textures.BindScreen(program, renderer, "iceBackNormals", frame->BackfaceNormals);
-  // One prop: its own front faces are the nearest (the test never discards).
-  frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest ? nearest : frontDepth);
-  frame->BindCubeMap(program, actor);
-  renderer->UpdateLightingUniforms(program);
-  const vtkIceInteriorTable* interior = mapper->BeginScreenInterior(renderer, actor, program);
-  if (!interior)
+  // The first program readies the mapper's table, environment and look; the others get the
+  // same uniforms.
+  const vtkIceInteriorTable* interior = nullptr;
+  auto ready = [&](vtkShaderProgram* program) {
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    frame->Textures.BindScreen(program, renderer, "iceDepthInterval", frontDepth);
+    frame->Textures.BindScreen(program, renderer, "iceBackNormals", frame->BackfaceNormals);
+    // One prop: its own front faces are the nearest (the test never discards).
+    frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest ? nearest : frontDepth);
+    frame->BindCubeMap(program, actor);
+    renderer->UpdateLightingUniforms(program);
+    if (interior)
+    {
+      mapper->SetScreenInteriorUniforms(renderer, actor, program);
+      return true;
+    }
+    interior = mapper->BeginScreenInterior(renderer, actor, program);
+    return interior != nullptr;
+  };
+  if (core)
   {
-    return;
+    if (!ready(core->Program))
+    {
+      return;
+    }
+    core->Render();
   }
-  this->Tiles.Update(renderer, actor, *interior, width, height, covered);
-  this->Tiles.SetUniforms(program);
-  quad->Render();
-  this->Tiles.Finish();
+  if (planes)
+  {
+    if (!ready(planes))
+    {
+      return;
+    }
+    this->Air.Draw(actor, *interior, planes);
+  }
+  if (after)
+  {
+    if (!ready(after->Program))
+    {
+      return;
+    }
+    after->Render();
+  }
   mapper->EndScreenInterior(renderer);
 }
 
@@ -162,6 +229,6 @@ void vtkIceScreenInterior::ReleaseGraphicsResources(vtkWindow* window)
     quad.second->ReleaseGraphicsResources(window);
   }
   this->Quads.clear();
-  this->Tiles.ReleaseGraphicsResources(window);
+  this->Air.ReleaseGraphicsResources(window);
   this->Target.ReleaseGraphicsResources(window);
 }

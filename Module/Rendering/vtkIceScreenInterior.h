@@ -1,15 +1,16 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026 the VTK Ice developers
 // SPDX-License-Identifier: BSD-3-Clause
-// The screen-space step of vtkIceMapper::InteriorScreenSpace: an ice prop's cracks, air and milky
-// core evaluated once per pixel inside its projected bounding box, by a quad over a
+// The screen-space step of vtkIceMapper::InteriorScreenSpace: an ice prop's cracks, milky core and
+// bubbles evaluated once per pixel inside its projected bounding box, by a quad over a
 // viewport-sized target (RGBA float: what the interior adds to the ice colour and how much of it
-// it keeps), which the ice's surface program then applies (ICE_FRAME_SCREEN_INTERIOR). Its cost
-// follows the ice's pixels, not its triangles or their overdraw. vtkIcePass owns one and draws
+// it keeps), and its air planes drawn as quads between (vtkIceScreenAir); the ice's surface
+// program then applies the result (ICE_FRAME_SCREEN_INTERIOR). Its cost follows the ice's
+// pixels, not its triangles or their overdraw. vtkIcePass owns one and draws
 // it prop by prop before the scene, after the back faces. Inside the module.
 #ifndef vtkIceScreenInterior_h
 #define vtkIceScreenInterior_h
 
-#include "vtkIceInteriorTiles.h"
+#include "vtkIceScreenAir.h"
 #include "vtkIceScreenTarget.h"
 
 #include <map>
@@ -21,6 +22,7 @@ class vtkIceDepthIntervalPass;
 class vtkIceFrame;
 class vtkIceMapper;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkRenderState;
 class vtkTextureObject;
 class vtkWindow;
@@ -49,7 +51,10 @@ public:
 
 private:
   vtkIceScreenTarget Target;
-  vtkIceInteriorTiles Tiles;
+  // The quad (null where it failed to compile) for the programs' `declarations`.
+  vtkOpenGLQuadHelper* ReadyQuad(vtkOpenGLRenderWindow* window, const std::string& declarations);
+
+  vtkIceScreenAir Air;
   // By fragment shader source: the lights and the roughness of the environment change it.
   std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Quads;
   bool Cleared = false;

@@ -2,12 +2,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //ICE::Dec
 // The ice's cracks and air along the view ray from a front-surface point to the nearest back face
-// (its view depth is in the back-face target's alpha), intersected with the crack sheets and air
-// planes of vtkIceInteriorTable's table (the cracks of the grid's cells the ray crosses, the
-// planes of the pixel's tile): the air is composited over the ice colour back to front, the
-// cracks' highlights are added on top, as the paper's passes composite them. Evaluated
-// once per pixel by the screen-space step (vtkIceScreenInterior), which hands the surface its
-// result.
+// (its view depth is in the back-face target's alpha), intersected with the crack sheets of
+// vtkIceInteriorTable's table (the cracks of the grid's cells the ray crosses) and with its air
+// planes: the air is composited over the ice colour back to front, the cracks' highlights are
+// added on top, as the paper's passes composite them. The screen-space step
+// (vtkIceScreenInterior) evaluates it once per pixel, the air planes drawn as quads between the
+// core behind them and the rest (iceAirPlane), and hands the surface its result.
 uniform sampler3D iceInteriorBump;  // periodic noise gradient, 8 noise cells per repeat
 uniform sampler2D iceAirAtlas;      // bubble images (RGBA), 2 x 2 tiles
 uniform int iceAirCount;            // the next records, back to front for this camera
@@ -28,13 +28,6 @@ uniform float iceBubbleFade;         // how much a bubble fades per model unit o
 // units): the screen-space step sets it, so that a bubble smaller than a pixel covers its share
 // of the pixel instead of flickering.
 vec2 icePixelFootprint = vec2(0.0);
-
-// The air planes this pixel's ray may meet: every one, or (the screen-space interior) its tile's
-// list (vtkIceInteriorTiles).
-#ifndef ICE_INTERIOR_TILES
-int iceAirHere() { return iceAirCount; }
-int iceAirRecord(int j) { return iceCrackCount + j; }
-#endif
 
 // Three independent numbers in [0, 1) for a grid cell, the same on every GPU.
 vec3 iceCellRandom(ivec3 c)
@@ -199,10 +192,12 @@ vec3 iceCrackLight(vec3 n, vec3 toEye, vec3 positionWC)
 
 // The interior behind the front-surface point `positionWC` (`positionMC` in model coordinates,
 // `viewDepth` in front of the camera) up to the nearest back face at view depth `backDepth`
-// (0: none), as vec4(add, keep) (iceInteriorOver). The milky core and the bubbles
-// (ICE_INTERIOR_CLOUD), the air planes (ICE_INTERIOR_AIR) and the cracks (ICE_INTERIOR_CRACKS)
-// are compiled in only where the look has them: llvmpipe runs the code of a branch not taken
-// (the cloud's alone took about a tenth of the teapot's full look).
+// (0: none), as vec4(add, keep) (iceInteriorOver), without the air planes (iceAirPlane). The
+// milky core and the bubbles (ICE_INTERIOR_CLOUD) and the cracks (ICE_INTERIOR_CRACKS) are
+// compiled in only where the look has them: llvmpipe runs the code of a branch not taken (the
+// cloud's alone took about a tenth of the teapot's full look). Where air planes lie between, the
+// core behind them is drawn first (ICE_INTERIOR_CORE_ONLY), the rest after them
+// (ICE_INTERIOR_AFTER_CORE).
 vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float viewDepth,
   float backDepth, float cloudLength)
 {
@@ -227,11 +222,10 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
   vec3 dCloud = mat3(iceWCMCMatrix) * refracted;
   float alongCloud = dot(refracted, iceViewDirectionWC);
   float sCloud = cloudLength > 0.0 ? cloudLength : sBack;
-
-  // The milky core behind the air: the air planes in front of it are seen through less of it.
   vec3 coreOrigin = (o - iceCoreCenter) * iceCoreScale;
   vec3 coreDirection = dCloud * iceCoreScale;
-  vec3 coreDirectionEye = d * iceCoreScale;
+#ifndef ICE_INTERIOR_AFTER_CORE
+  // The milky core behind the air: the air planes in front of it are seen through less of it.
   if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
   {
     float depth = iceCoreOpticalDepth(coreOrigin, coreDirection, sCloud, iceCoreDensity) *
@@ -239,32 +233,9 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
     iceInteriorOver(t, ICE_CORE_COLOUR, iceMilkyCoreCover(depth));
   }
 #endif
-  // Every step samples the atlas: texture() then takes its level from the pixel's footprint
-  // (implicit derivatives need uniform control flow). A plane missed by this pixel's ray adds
-  // nothing (alpha 0). On llvmpipe, which executes both sides of a branch, this is also the
-  // cheapest form. Tested at the end, as iceNearestCrack's loops: where the tile has no plane,
-  // the one step adds nothing.
-#ifdef ICE_INTERIOR_AIR
-  int airHere = iceAirHere();
-  int k = 0;
-  do
-  {
-    // With no plane, min() reads the list's count (0): a record that exists.
-    IceLocalRay ray = iceLocalRay(iceAirRecord(min(k, airHere - 1)), o, d);
-    float s = -ray.origin.z / ray.direction.z;
-    vec2 xy = ray.origin.xy + s * ray.direction.xy;
-    bool hit = k < airHere && s > 0.0 && s < sBack && abs(xy.x) <= 1.0 && abs(xy.y) <= 1.0;
-    vec4 bubble = texture(iceAirAtlas, ray.shape.xy + 0.01 + 0.24 * (clamp(xy, -1.0, 1.0) + 1.0));
-    vec4 layer = iceAirLayer(bubble, iceMilkiness, iceInteriorDebug == ICE_DEBUG_AIR);
-#ifdef ICE_INTERIOR_CLOUD
-    if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
-    {
-      layer.a *= iceAirNearCore(coreOrigin + s * coreDirectionEye,
-        iceCoreOpticalDepth(coreOrigin, coreDirectionEye, s, iceCoreDensity));
-    }
+#ifdef ICE_INTERIOR_CORE_ONLY
+  return t;
 #endif
-    iceInteriorOver(t, layer.rgb, hit ? layer.a : 0.0);
-  } while (++k < airHere);
 #endif
 
 #ifdef ICE_INTERIOR_CLOUD
@@ -312,4 +283,31 @@ vec4 iceInteriorAlong(vec3 positionWC, vec3 positionMC, vec3 refracted, float vi
   return iceInteriorDebug == ICE_DEBUG_CRACKS && crackSeen
     ? vec4(1.0, 0.0, 0.0, 0.0)
     : vec4(t.rgb + iceCrackIntensity * highlights, t.a);
+}
+
+// Air plane fragments (vtkIceScreenAir): the plane at `positionWC`, its bubble image `bubble`
+// there, where the depth test passed it behind the pixel's front face (view depth `viewDepth`,
+// read only for the milky core), over the ice's interior where it lies in front of the nearest
+// back face (`backDepth`, 0: none), as vec4(add, keep). The planes' quads, drawn in the table's
+// order (back to front), do what a loop over every plane a pixel's ray meets would do.
+vec4 iceAirPlane(vec3 positionWC, vec4 bubble, float viewDepth, float backDepth)
+{
+  float depth = dot(positionWC - iceCameraWC, iceViewDirectionWC);
+  vec4 layer = iceAirLayer(bubble, iceMilkiness, iceInteriorDebug == ICE_DEBUG_AIR);
+#ifdef ICE_INTERIOR_CLOUD
+  if (iceCoreDensity > 0.0 && iceInteriorDebug == 0)
+  {
+    // The core in front of the plane, along the eye ray from the front face.
+    vec3 e = iceEyeVectorWC(positionWC);
+    float s = (depth - viewDepth) / max(dot(e, iceViewDirectionWC), 1.0e-6);
+    vec3 o = (iceWCMCMatrix * vec4(positionWC - s * e, 1.0)).xyz;
+    vec3 coreOrigin = (o - iceCoreCenter) * iceCoreScale;
+    vec3 coreDirectionEye = mat3(iceWCMCMatrix) * e * iceCoreScale;
+    layer.a *= iceAirNearCore(coreOrigin + s * coreDirectionEye,
+      iceCoreOpticalDepth(coreOrigin, coreDirectionEye, s, iceCoreDensity));
+  }
+#endif
+  // Behind the front faces (the depth test), in front of the back faces.
+  float a = depth < backDepth ? layer.a : 0.0;
+  return vec4(a * layer.rgb, 1.0 - a);
 }

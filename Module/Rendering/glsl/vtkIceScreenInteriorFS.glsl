@@ -10,31 +10,13 @@ uniform sampler2D iceScreenInterior;
       gl_FragData[0].rgb =
         gl_FragData[0].rgb * iceScreenInteriorResult.a + iceScreenInteriorResult.rgb;
     }
-//ICE::Tiles
-// The air planes of this pixel's tile (vtkIceInteriorTiles): the lists one after the other, each
-// its count, then the planes' records' positions in the table.
-#define ICE_INTERIOR_TILES
-uniform sampler2D iceTileLists;
-uniform ivec2 iceTileOrigin; // pixel of tile (0, 0)
-uniform int iceTilesAcross;
-uniform int iceTileStride;   // texels per list
-const int iceTileSize = 16;
-const int iceTileRowTexels = 4096;
-int iceTileStart = 0;
-
-int iceTileEntry(int i)
-{
-  int at = iceTileStart + i;
-  return int(texelFetch(iceTileLists, ivec2(at % iceTileRowTexels, at / iceTileRowTexels), 0).r);
-}
-int iceAirHere() { return iceTileEntry(0); }
-int iceAirRecord(int j) { return iceTileEntry(1 + j); }
 //ICE::Dec
 // The screen-space interior (vtkIceScreenInterior): one ice prop's interior once per pixel, from
 // its own nearest front face (the view depth in the depth interval's R, its normal in B and A;
 // FLT_MAX: none) to the nearest back face of the ice (the back-face target's alpha), written as
-// vec4(add, keep). The quad reaches only the prop's front faces (depth test); where ice props
-// overlap, only the nearest one's interior is written.
+// vec4(add, keep), composed in front of what the target holds (the core, the air planes and the
+// rest drawn one after the other). The quad reaches only the prop's front faces (depth test);
+// where ice props overlap, only the nearest one's interior is written.
 uniform sampler2D iceDepthInterval;
 uniform sampler2D iceBackNormals;
 uniform mat4 iceDCWCMatrix; // normalised device coordinates to world
@@ -45,12 +27,9 @@ uniform sampler2D iceNearestFront;
   ivec2 texel = iceScreenTexel();
   vec4 frontTexel = texelFetch(iceDepthInterval, texel, 0);
   float front = frontTexel.r;
-  if (front > texelFetch(iceNearestFront, texel, 0).r)
-  {
-    discard;
-  }
-  ivec2 tile = (ivec2(gl_FragCoord.xy) - iceTileOrigin) / iceTileSize;
-  iceTileStart = (tile.y * iceTilesAcross + tile.x) * iceTileStride;
+  // Where another ice prop is nearer: no back face, nothing added (no discard, which costs
+  // llvmpipe more than it saves).
+  bool nearest = front <= texelFetch(iceNearestFront, texel, 0).r;
   // The front face's point: on the pixel's ray through the near and far planes, at its depth.
   vec2 ndc = 2.0 * texCoord - 1.0; // the quad's texture coordinates: the pixel centre's
   vec4 nearWC = iceDCWCMatrix * vec4(ndc, -1.0, 1.0);
@@ -62,7 +41,7 @@ uniform sampler2D iceNearestFront;
   vec3 positionWC = mix(a, b, (front - depthA) / (depthB - depthA));
   vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
   vec3 normalWC = iceDecodeNormal(frontTexel.ba);
-  vec4 backHere = texelFetch(iceBackNormals, texel, 0);
+  vec4 backHere = nearest ? texelFetch(iceBackNormals, texel, 0) : vec4(0.0);
 #ifdef ICE_INTERIOR_CLOUD
   // The width of a pixel at depthA and depthB, from the next pixel's ray: linear in the depth.
   float nextX = ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x);
@@ -85,3 +64,35 @@ uniform sampler2D iceNearestFront;
 #endif
   gl_FragData[0] =
     iceInteriorAlong(positionWC, positionMC, refractedWC, front, backHere.a, cloudLength);
+//ICE::AirVS
+// The air planes' quads (vtkIceScreenAir): corners in world coordinates (in VTK's helper's
+// attribute names), the bubble images' atlas coordinates.
+//VTK::System::Dec
+in vec4 vertexMC;
+in vec2 tcoordMC;
+uniform mat4 iceWCDCMatrix;
+out vec3 iceAirPositionWC;
+out vec2 iceAirAtlasCoordinates;
+void main()
+{
+  iceAirPositionWC = vertexMC.xyz;
+  iceAirAtlasCoordinates = tcoordMC;
+  gl_Position = iceWCDCMatrix * vertexMC;
+}
+//ICE::AirFS
+//VTK::System::Dec
+//VTK::Output::Dec
+in vec3 iceAirPositionWC;
+in vec2 iceAirAtlasCoordinates;
+//ICEHOOK::AirDeclarations
+void main()
+{
+  ivec2 texel = iceScreenTexel();
+  float front = texelFetch(iceDepthInterval, texel, 0).r;
+  // Where another ice prop is nearer: no back face, nothing added (as the quad).
+  float back = front > texelFetch(iceNearestFront, texel, 0).r
+    ? 0.0
+    : texelFetch(iceBackNormals, texel, 0).a;
+  gl_FragData[0] = iceAirPlane(iceAirPositionWC, texture(iceAirAtlas, iceAirAtlasCoordinates),
+    front, back);
+}
