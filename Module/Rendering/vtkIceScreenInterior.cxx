@@ -75,6 +75,16 @@ std::string QuadShader(const std::string& declarations)
   return fs;
 }
 
+// The draw that keeps the others where the prop's front faces are the nearest of the ice.
+std::string NearestShader()
+{
+  using vtkIceShaderSections::Get;
+  std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+  vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", Get(vtkIceScreenInteriorFS, "NearestDec"));
+  vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", Get(vtkIceScreenInteriorFS, "NearestImpl"));
+  return fs;
+}
+
 // VTK's full-screen quad on the far plane (window depth 1): depth-tested against the prop's
 // front faces' depth, it runs the shader only where they are, before shading.
 std::string QuadVertexShader()
@@ -101,6 +111,32 @@ vtkOpenGLQuadHelper* vtkIceScreenInterior::ReadyQuad(
     window->GetShaderCache()->ReadyShaderProgram(quad->Program);
   }
   return quad->Program ? quad.get() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkIceScreenInterior::KeepNearest(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
+  vtkIceFrame* frame, vtkTextureObject* front, vtkTextureObject* nearest)
+{
+  if (!this->Nearest)
+  {
+    this->Nearest.reset(new vtkOpenGLQuadHelper(window, nullptr, NearestShader().c_str(), ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(this->Nearest->Program);
+  }
+  vtkShaderProgram* program = this->Nearest->Program;
+  if (!program || !frame->Textures.Bind(program, "iceDepthInterval", front) ||
+    !frame->Textures.Bind(program, "iceNearestFront", nearest))
+  {
+    return false;
+  }
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  this->Nearest->Render();
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -167,6 +203,10 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
   vtkProp* prop = actor;
   vtkIceScreenRegion::Covered(renderer, &prop, 1, width, height, covered);
   state->vtkglScissor(covered[0], covered[1], covered[2] - covered[0], covered[3] - covered[1]);
+  if (nearest && !this->KeepNearest(window, state, frame, frontDepth, nearest))
+  {
+    return;
+  }
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglDepthFunc(GL_GREATER);
   vtkOpenGLState::ScopedglBlendFuncSeparate blending(state);
@@ -182,8 +222,6 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
     window->GetShaderCache()->ReadyShaderProgram(program);
     frame->Textures.BindScreen(program, renderer, "iceDepthInterval", frontDepth);
     frame->Textures.BindScreen(program, renderer, "iceBackNormals", frame->BackfaceNormals);
-    // One prop: its own front faces are the nearest (the test never discards).
-    frame->Textures.BindScreen(program, renderer, "iceNearestFront", nearest ? nearest : frontDepth);
     frame->BindCubeMap(program, actor);
     renderer->UpdateLightingUniforms(program);
     if (interior)
@@ -229,6 +267,11 @@ void vtkIceScreenInterior::ReleaseGraphicsResources(vtkWindow* window)
     quad.second->ReleaseGraphicsResources(window);
   }
   this->Quads.clear();
+  if (this->Nearest)
+  {
+    this->Nearest->ReleaseGraphicsResources(window);
+    this->Nearest.reset();
+  }
   this->Air.ReleaseGraphicsResources(window);
   this->Target.ReleaseGraphicsResources(window);
 }

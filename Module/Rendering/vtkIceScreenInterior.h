@@ -23,6 +23,7 @@ class vtkIceFrame;
 class vtkIceMapper;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
 class vtkRenderState;
 class vtkTextureObject;
 class vtkWindow;
@@ -40,7 +41,8 @@ public:
   // rendered them last (FrontOnly: their view depth, and their window depth, against which the
   // quad is depth-tested so that no other pixel runs the shader), and where they are the nearest
   // of the ice (`nearest`: the nearest front faces' view depth of all the ice; null when this is
-  // the only ice with a screen-space interior). The frame holds the back faces.
+  // the only ice with a screen-space interior: then no draw reads it). The frame holds the back
+  // faces.
   void Draw(const vtkRenderState* iceState, vtkActor* actor, vtkIceMapper* mapper,
     vtkIceFrame* frame, vtkIceDepthIntervalPass* front, vtkTextureObject* nearest);
 
@@ -53,6 +55,12 @@ private:
   vtkIceScreenTarget Target;
   // The quad (null where it failed to compile) for the programs' `declarations`.
   vtkOpenGLQuadHelper* ReadyQuad(vtkOpenGLRenderWindow* window, const std::string& declarations);
+
+  // Where `nearest` is given: the prop's front faces' window depth (the target's depth) moved to
+  // the far plane wherever another ice prop's front faces are nearer. False where it failed.
+  bool KeepNearest(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, vtkIceFrame* frame,
+    vtkTextureObject* front, vtkTextureObject* nearest);
+  std::unique_ptr<vtkOpenGLQuadHelper> Nearest;
 
   vtkIceScreenAir Air;
   // By fragment shader source: the lights and the roughness of the environment change it.

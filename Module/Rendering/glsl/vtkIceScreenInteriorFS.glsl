@@ -16,20 +16,14 @@ uniform sampler2D iceScreenInterior;
 // FLT_MAX: none) to the nearest back face of the ice (the back-face target's alpha), written as
 // vec4(add, keep), composed in front of what the target holds (the core, the air planes and the
 // rest drawn one after the other). The quad reaches only the prop's front faces (depth test);
-// where ice props overlap, only the nearest one's interior is written.
+// where ice props overlap, only the nearest one's (Nearest, below).
 uniform sampler2D iceDepthInterval;
 uniform sampler2D iceBackNormals;
 uniform mat4 iceDCWCMatrix; // normalised device coordinates to world
-// R: the nearest front faces' view depth of all the ice (the prop's own with one prop: one
-// program either way, no compile when an ice prop leaves the view).
-uniform sampler2D iceNearestFront;
 //ICE::Impl
   ivec2 texel = iceScreenTexel();
   vec4 frontTexel = texelFetch(iceDepthInterval, texel, 0);
   float front = frontTexel.r;
-  // Where another ice prop is nearer: no back face, nothing added (no discard, which costs
-  // llvmpipe more than it saves).
-  bool nearest = front <= texelFetch(iceNearestFront, texel, 0).r;
   // The front face's point: on the pixel's ray through the near and far planes, at its depth.
   vec2 ndc = 2.0 * texCoord - 1.0; // the quad's texture coordinates: the pixel centre's
   vec4 nearWC = iceDCWCMatrix * vec4(ndc, -1.0, 1.0);
@@ -41,7 +35,7 @@ uniform sampler2D iceNearestFront;
   vec3 positionWC = mix(a, b, (front - depthA) / (depthB - depthA));
   vec3 positionMC = (iceWCMCMatrix * vec4(positionWC, 1.0)).xyz;
   vec3 normalWC = iceDecodeNormal(frontTexel.ba);
-  vec4 backHere = nearest ? texelFetch(iceBackNormals, texel, 0) : vec4(0.0);
+  vec4 backHere = texelFetch(iceBackNormals, texel, 0);
 #ifdef ICE_INTERIOR_CLOUD
   // The width of a pixel at depthA and depthB, from the next pixel's ray: linear in the depth.
   float nextX = ndc.x + 2.0 / float(textureSize(iceDepthInterval, 0).x);
@@ -87,12 +81,28 @@ in vec2 iceAirAtlasCoordinates;
 //ICEHOOK::AirDeclarations
 void main()
 {
-  ivec2 texel = iceScreenTexel();
-  float front = texelFetch(iceDepthInterval, texel, 0).r;
-  // Where another ice prop is nearer: no back face, nothing added (as the quad).
-  float back = front > texelFetch(iceNearestFront, texel, 0).r
-    ? 0.0
-    : texelFetch(iceBackNormals, texel, 0).a;
+  vec4 back = texelFetch(iceBackNormals, iceScreenTexel(), 0);
   gl_FragData[0] = iceAirPlane(iceAirPositionWC, texture(iceAirAtlas, iceAirAtlasCoordinates),
-    front, back);
+#ifdef ICE_INTERIOR_CLOUD
+    texelFetch(iceDepthInterval, iceScreenTexel(), 0).r,
+#else
+    0.0,
+#endif
+    back.a);
 }
+//ICE::NearestDec
+// Where several ice props have an interior, a draw before the others moves the prop's front
+// faces' window depth to the far plane wherever another ice prop's front faces are nearer: the
+// depth test then keeps the quads (on the far plane) and the air planes (behind the front faces)
+// off those pixels, and they read no other prop's depth themselves (a texel fetch per air plane
+// and pixel, which llvmpipe pays for).
+uniform sampler2D iceDepthInterval; // R: the prop's front faces' view depth
+uniform sampler2D iceNearestFront;  // R: the nearest front faces' view depth of all the ice
+//ICE::NearestImpl
+  // The quad's texture coordinates (the pixel centre's) in texels.
+  ivec2 texel = ivec2(texCoord * vec2(textureSize(iceDepthInterval, 0)));
+  if (texelFetch(iceDepthInterval, texel, 0).r <= texelFetch(iceNearestFront, texel, 0).r)
+  {
+    discard;
+  }
+  gl_FragDepth = 1.0;
