@@ -65,24 +65,19 @@ std::string Declarations(
     Get(vtkIceScreenInteriorFS, "Dec") + Get(vtkIceExitPointFS, "Exit");
 }
 
-// The quad's fragment shader: the declarations in VTK's full-screen-quad template.
-std::string QuadShader(const std::string& declarations)
+// A quad's fragment shader: `declarations` and `body` in VTK's full-screen-quad template.
+std::string QuadShader(const std::string& declarations, const std::string& body)
 {
-  using vtkIceShaderSections::Get;
   std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
   vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", declarations);
-  vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", Get(vtkIceScreenInteriorFS, "Impl"));
+  vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", body);
   return fs;
 }
 
-// The draw that keeps the others where the prop's front faces are the nearest of the ice.
-std::string NearestShader()
+// The interior's quad for the programs' `declarations`.
+std::string InteriorShader(const std::string& declarations)
 {
-  using vtkIceShaderSections::Get;
-  std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-  vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", Get(vtkIceScreenInteriorFS, "NearestDec"));
-  vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", Get(vtkIceScreenInteriorFS, "NearestImpl"));
-  return fs;
+  return QuadShader(declarations, vtkIceShaderSections::Get(vtkIceScreenInteriorFS, "Impl"));
 }
 
 // VTK's full-screen quad on the far plane (window depth 1): depth-tested against the prop's
@@ -98,9 +93,8 @@ std::string QuadVertexShader()
 
 //------------------------------------------------------------------------------
 vtkOpenGLQuadHelper* vtkIceScreenInterior::ReadyQuad(
-  vtkOpenGLRenderWindow* window, const std::string& declarations)
+  vtkOpenGLRenderWindow* window, const std::string& source)
 {
-  const std::string source = QuadShader(declarations);
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[source];
   if (!quad)
   {
@@ -117,15 +111,11 @@ vtkOpenGLQuadHelper* vtkIceScreenInterior::ReadyQuad(
 bool vtkIceScreenInterior::KeepNearest(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
   vtkIceFrame* frame, vtkTextureObject* front, vtkTextureObject* nearest)
 {
-  if (!this->Nearest)
-  {
-    this->Nearest.reset(new vtkOpenGLQuadHelper(window, nullptr, NearestShader().c_str(), ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(this->Nearest->Program);
-  }
-  vtkShaderProgram* program = this->Nearest->Program;
+  using vtkIceShaderSections::Get;
+  vtkOpenGLQuadHelper* quad = this->ReadyQuad(window,
+    QuadShader(
+      Get(vtkIceScreenInteriorFS, "NearestDec"), Get(vtkIceScreenInteriorFS, "NearestImpl")));
+  vtkShaderProgram* program = quad ? quad->Program : nullptr;
   if (!program || !frame->Textures.Bind(program, "iceDepthInterval", front) ||
     !frame->Textures.Bind(program, "iceNearestFront", nearest))
   {
@@ -134,7 +124,7 @@ bool vtkIceScreenInterior::KeepNearest(vtkOpenGLRenderWindow* window, vtkOpenGLS
   state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglDepthFunc(GL_ALWAYS);
-  this->Nearest->Render();
+  quad->Render();
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   return true;
 }
@@ -178,15 +168,15 @@ void vtkIceScreenInterior::Draw(const vtkRenderState* iceState, vtkActor* actor,
     parts.Cracks || (parts.Cloud && (!coreFirst || look->GetBubbleDensity() > 0.0));
   const std::string common = parts.Cloud ? "#define ICE_INTERIOR_CLOUD\n" : "";
   vtkOpenGLQuadHelper* core = coreFirst
-    ? this->ReadyQuad(
-        window, Declarations(renderer, look, common + "#define ICE_INTERIOR_CORE_ONLY\n"))
+    ? this->ReadyQuad(window,
+        InteriorShader(Declarations(renderer, look, common + "#define ICE_INTERIOR_CORE_ONLY\n")))
     : nullptr;
   vtkShaderProgram* planes =
     parts.Air ? this->Air.Ready(window, Declarations(renderer, look, common)) : nullptr;
   vtkOpenGLQuadHelper* after = rest
-    ? this->ReadyQuad(window, Declarations(renderer, look, common +
+    ? this->ReadyQuad(window, InteriorShader(Declarations(renderer, look, common +
         (parts.Cracks ? "#define ICE_INTERIOR_CRACKS\n" : "") +
-        (coreFirst ? "#define ICE_INTERIOR_AFTER_CORE\n" : "")))
+        (coreFirst ? "#define ICE_INTERIOR_AFTER_CORE\n" : ""))))
     : nullptr;
   if ((coreFirst && !core) || (parts.Air && !planes) || (rest && !after))
   {
@@ -267,11 +257,6 @@ void vtkIceScreenInterior::ReleaseGraphicsResources(vtkWindow* window)
     quad.second->ReleaseGraphicsResources(window);
   }
   this->Quads.clear();
-  if (this->Nearest)
-  {
-    this->Nearest->ReleaseGraphicsResources(window);
-    this->Nearest.reset();
-  }
   this->Air.ReleaseGraphicsResources(window);
   this->Target.ReleaseGraphicsResources(window);
 }

@@ -53,17 +53,17 @@ public:
 
 private:
   vtkIceScreenTarget Target;
-  // The quad (null where it failed to compile) for the programs' `declarations`.
-  vtkOpenGLQuadHelper* ReadyQuad(vtkOpenGLRenderWindow* window, const std::string& declarations);
+  // The quad (null where it failed to compile) for the fragment shader `source`.
+  vtkOpenGLQuadHelper* ReadyQuad(vtkOpenGLRenderWindow* window, const std::string& source);
 
   // Where `nearest` is given: the prop's front faces' window depth (the target's depth) moved to
   // the far plane wherever another ice prop's front faces are nearer. False where it failed.
   bool KeepNearest(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, vtkIceFrame* frame,
     vtkTextureObject* front, vtkTextureObject* nearest);
-  std::unique_ptr<vtkOpenGLQuadHelper> Nearest;
 
   vtkIceScreenAir Air;
-  // By fragment shader source: the lights and the roughness of the environment change it.
+  // By fragment shader source (the nearest prop's quad among them): the lights and the
+  // roughness of the environment change the interior's.
   std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Quads;
   bool Cleared = false;
 
